@@ -1,0 +1,70 @@
+package org.emini.math;
+
+/**
+ * The one place where the engine takes square roots and trigonometric functions.
+ *
+ * <p>All other numeric code in the engine is plain {@code float} arithmetic. Keeping these calls
+ * here lets the double-precision and fixed-point flavours of the engine be generated from the same
+ * source by replacing this class alone. Trigonometry goes through {@link StrictMath} so results are
+ * bit-identical on every JVM and Android runtime; {@code sqrt} is exactly rounded by IEEE 754.
+ */
+public final class EMath {
+    /** π as a float. */
+    public static final float PI = 3.14159265358979f;
+    /** 2π as a float. */
+    public static final float TWO_PI = 6.28318530717959f;
+
+    private EMath() {
+    }
+
+    /**
+     * Square root.
+     *
+     * @param x a non-negative value
+     * @return √x
+     */
+    public static float sqrt(float x) {
+        return (float) Math.sqrt(x);
+    }
+
+    /**
+     * Sine.
+     *
+     * @param radians the angle in radians
+     * @return sin(radians)
+     */
+    public static float sin(float radians) {
+        return (float) StrictMath.sin(radians);
+    }
+
+    /**
+     * Cosine.
+     *
+     * @param radians the angle in radians
+     * @return cos(radians)
+     */
+    public static float cos(float radians) {
+        return (float) StrictMath.cos(radians);
+    }
+
+    /**
+     * Four-quadrant arc tangent.
+     *
+     * @param y the ordinate
+     * @param x the abscissa
+     * @return the angle of (x, y) in radians, in [-π, π]
+     */
+    public static float atan2(float y, float x) {
+        return (float) StrictMath.atan2(y, x);
+    }
+
+    /**
+     * Whether a value is neither NaN nor infinite.
+     *
+     * @param x the value
+     * @return true when x is a finite number
+     */
+    public static boolean isFinite(float x) {
+        return x - x == 0f;
+    }
+}
