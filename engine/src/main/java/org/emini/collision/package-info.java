@@ -1,0 +1,4 @@
+/**
+ * Collision detection: broadphase, narrowphase and contact manifolds.
+ */
+package org.emini.collision;
