@@ -2,6 +2,7 @@ package org.emini.io;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.util.List;
 
 /**
  * Reads an original world file (<code>.phy</code>, <code>.world</code>; versions 1 to 10) into a
@@ -168,78 +169,98 @@ public final class PhyReader {
         return w;
     }
 
-    private static void readShapes(PhyInput in, PhyWorld w) throws PhyFormatException {
+    /** Reads one record of a list. */
+    private interface RecordReader<T> {
+        T read(PhyInput in) throws PhyFormatException;
+    }
+
+    /** Reads a u8 count and that many records, naming each by its index in the whole list. */
+    private static <T> int readList(PhyInput in, String count, String kind, List<T> list, RecordReader<T> reader)
+            throws PhyFormatException {
         in.record("", -1);
-        int n = in.u8("shape count");
+        int n = in.u8(count);
         for (int i = 0; i < n; i++) {
-            in.record("shape", w.getShapes().size());
-            w.getShapes().add(PhyShape.read(in));
+            in.record(kind, list.size());
+            list.add(reader.read(in));
         }
+        return n;
+    }
+
+    private static void readShapes(final PhyInput in, final PhyWorld w) throws PhyFormatException {
+        final List<PhyShapeBase> shapes = w.getShapes();
+        int n = readList(in, "shape count", "shape", shapes, new RecordReader<PhyShapeBase>() {
+            @Override
+            public PhyShapeBase read(PhyInput i) throws PhyFormatException {
+                return PhyShape.read(i);
+            }
+        });
         int m = 0;
         if (PhyVersion.hasMultiShapes(in.version())) {
-            in.record("", -1);
-            m = in.u8("multishape count");
-            for (int i = 0; i < m; i++) {
-                in.record("shape (multishape)", w.getShapes().size());
-                w.getShapes().add(PhyMultiShape.read(in, w.getShapes().size()));
-            }
+            m = readList(in, "multishape count", "shape (multishape)", shapes, new RecordReader<PhyShapeBase>() {
+                @Override
+                public PhyShapeBase read(PhyInput i) throws PhyFormatException {
+                    return PhyMultiShape.read(i, shapes.size());
+                }
+            });
         }
         w.getLayout().add(new PhySection(PhySection.SHAPES, n, m));
     }
 
-    private static void readBodies(PhyInput in, PhyWorld w) throws PhyFormatException {
-        in.record("", -1);
-        int n = in.u8("body count");
-        for (int i = 0; i < n; i++) {
-            in.record("body", w.getBodies().size());
-            w.getBodies().add(PhyBody.read(in, w.getShapes().size()));
-        }
+    private static void readBodies(PhyInput in, final PhyWorld w) throws PhyFormatException {
+        int n = readList(in, "body count", "body", w.getBodies(), new RecordReader<PhyBody>() {
+            @Override
+            public PhyBody read(PhyInput i) throws PhyFormatException {
+                return PhyBody.read(i, w.getShapes().size());
+            }
+        });
         w.getLayout().add(new PhySection(PhySection.BODIES, n, 0));
     }
 
-    private static void readConstraints(PhyInput in, PhyWorld w) throws PhyFormatException {
-        in.record("", -1);
-        int n = in.u8("constraint count");
-        for (int i = 0; i < n; i++) {
-            in.record("constraint", w.getConstraints().size());
-            w.getConstraints().add(PhyConstraint.read(in, w.getBodies().size()));
-        }
+    private static void readConstraints(PhyInput in, final PhyWorld w) throws PhyFormatException {
+        int n = readList(in, "constraint count", "constraint", w.getConstraints(), new RecordReader<PhyConstraint>() {
+            @Override
+            public PhyConstraint read(PhyInput i) throws PhyFormatException {
+                return PhyConstraint.read(i, w.getBodies().size());
+            }
+        });
         w.getLayout().add(new PhySection(PhySection.CONSTRAINTS, n, 0));
     }
 
-    private static void readScripts(PhyInput in, PhyWorld w) throws PhyFormatException {
-        in.record("", -1);
-        int n = in.u8("script count");
-        for (int i = 0; i < n; i++) {
-            in.record("script", w.getScripts().size());
-            w.getScripts().add(PhyScript.read(in));
-        }
-        in.record("", -1);
-        int r = in.u8("script-body row count");
-        for (int i = 0; i < r; i++) {
-            in.record("script-body row", w.getScriptBindings().size());
-            w.getScriptBindings().add(PhyScriptBinding.read(in, w.getScripts().size(), w.getBodies().size()));
-        }
+    private static void readScripts(PhyInput in, final PhyWorld w) throws PhyFormatException {
+        int n = readList(in, "script count", "script", w.getScripts(), new RecordReader<PhyScript>() {
+            @Override
+            public PhyScript read(PhyInput i) throws PhyFormatException {
+                return PhyScript.read(i);
+            }
+        });
+        int r = readList(in, "script-body row count", "script-body row", w.getScriptBindings(),
+                new RecordReader<PhyScriptBinding>() {
+                    @Override
+                    public PhyScriptBinding read(PhyInput i) throws PhyFormatException {
+                        return PhyScriptBinding.read(i, w.getScripts().size(), w.getBodies().size());
+                    }
+                });
         w.getLayout().add(new PhySection(PhySection.SCRIPTS, n, r));
     }
 
-    private static void readEvents(PhyInput in, PhyWorld w) throws PhyFormatException {
-        in.record("", -1);
-        int n = in.u8("event count");
-        for (int i = 0; i < n; i++) {
-            in.record("event", w.getEvents().size());
-            w.getEvents().add(PhyEvent.read(in, w));
-        }
+    private static void readEvents(PhyInput in, final PhyWorld w) throws PhyFormatException {
+        int n = readList(in, "event count", "event", w.getEvents(), new RecordReader<PhyEvent>() {
+            @Override
+            public PhyEvent read(PhyInput i) throws PhyFormatException {
+                return PhyEvent.read(i, w);
+            }
+        });
         w.getLayout().add(new PhySection(PhySection.EVENTS, n, 0));
     }
 
-    private static void readEmitters(PhyInput in, PhyWorld w) throws PhyFormatException {
-        in.record("", -1);
-        int n = in.u8("particle emitter count");
-        for (int i = 0; i < n; i++) {
-            in.record("particle emitter", w.getParticleEmitters().size());
-            w.getParticleEmitters().add(PhyParticleEmitter.read(in, w.getBodies().size()));
-        }
+    private static void readEmitters(PhyInput in, final PhyWorld w) throws PhyFormatException {
+        int n = readList(in, "particle emitter count", "particle emitter", w.getParticleEmitters(),
+                new RecordReader<PhyParticleEmitter>() {
+                    @Override
+                    public PhyParticleEmitter read(PhyInput i) throws PhyFormatException {
+                        return PhyParticleEmitter.read(i, w.getBodies().size());
+                    }
+                });
         w.getLayout().add(new PhySection(PhySection.PARTICLES, n, 0));
     }
 }

@@ -208,37 +208,17 @@ public final class PhyWriter {
                     writeShapes(w, s, out);
                     break;
                 case PhySection.BODIES:
-                    out.u8(s.getCount());
-                    for (int i = 0; i < s.getCount(); i++, out.bodies++) {
-                        out.record("body", out.bodies);
-                        w.getBodies().get(out.bodies).write(out);
-                    }
+                    out.bodies = writeList(out, w.getBodies(), out.bodies, s.getCount(), "body");
                     break;
                 case PhySection.CONSTRAINTS:
-                    out.u8(s.getCount());
-                    for (int i = 0; i < s.getCount(); i++, out.constraints++) {
-                        out.record("constraint", out.constraints);
-                        w.getConstraints().get(out.constraints).write(out);
-                    }
+                    out.constraints = writeList(out, w.getConstraints(), out.constraints, s.getCount(), "constraint");
                     break;
                 case PhySection.SCRIPTS:
-                    out.u8(s.getCount());
-                    for (int i = 0; i < s.getCount(); i++, out.scripts++) {
-                        out.record("script", out.scripts);
-                        w.getScripts().get(out.scripts).write(out);
-                    }
-                    out.u8(s.getExtraCount());
-                    for (int i = 0; i < s.getExtraCount(); i++, rows++) {
-                        out.record("script-body row", rows);
-                        w.getScriptBindings().get(rows).write(out);
-                    }
+                    out.scripts = writeList(out, w.getScripts(), out.scripts, s.getCount(), "script");
+                    rows = writeList(out, w.getScriptBindings(), rows, s.getExtraCount(), "script-body row");
                     break;
                 case PhySection.EVENTS:
-                    out.u8(s.getCount());
-                    for (int i = 0; i < s.getCount(); i++, events++) {
-                        out.record("event", events);
-                        w.getEvents().get(events).write(out);
-                    }
+                    events = writeList(out, w.getEvents(), events, s.getCount(), "event");
                     break;
                 case PhySection.LANDSCAPE:
                     out.record("landscape material", -1);
@@ -251,11 +231,7 @@ public final class PhyWriter {
                     settings = true;
                     break;
                 case PhySection.PARTICLES:
-                    out.u8(s.getCount());
-                    for (int i = 0; i < s.getCount(); i++, emitters++) {
-                        out.record("particle emitter", emitters);
-                        w.getParticleEmitters().get(emitters).write(out);
-                    }
+                    emitters = writeList(out, w.getParticleEmitters(), emitters, s.getCount(), "particle emitter");
                     break;
                 default:
                     break;
@@ -278,6 +254,29 @@ public final class PhyWriter {
             out.bytes(w.getTrailingBytes());
         }
         return out.toByteArray();
+    }
+
+    /** Writes a u8 count and that many records from a list; returns the index after them. */
+    private static int writeList(PhyOutput out, List<?> list, int from, int n, String kind) {
+        out.u8(n);
+        for (int i = from; i < from + n; i++) {
+            out.record(kind, i);
+            Object r = list.get(i);
+            if (r instanceof PhyBody) {
+                ((PhyBody) r).write(out);
+            } else if (r instanceof PhyConstraint) {
+                ((PhyConstraint) r).write(out);
+            } else if (r instanceof PhyScript) {
+                ((PhyScript) r).write(out);
+            } else if (r instanceof PhyScriptBinding) {
+                ((PhyScriptBinding) r).write(out);
+            } else if (r instanceof PhyEvent) {
+                ((PhyEvent) r).write(out);
+            } else {
+                ((PhyParticleEmitter) r).write(out);
+            }
+        }
+        return from + n;
     }
 
     private static void writeShapes(PhyWorld w, PhySection s, PhyOutput out) {

@@ -24,13 +24,13 @@ class PhyFuzzProperties {
                 Arbitraries.integers());
     }
 
-    @Property(tries = 3000)
+    @Property(tries = 2000)
     void randomBytesAreReadOrRefused(@ForAll @Size(max = 3000) byte[] data) {
         Corruption.readOrRefuse(strict, data);
         Corruption.readOrRefuse(lenient, data);
     }
 
-    @Property(tries = 5000)
+    @Property(tries = 3000)
     void randomSectionsAfterAVersionWordAreReadOrRefused(@ForAll("versionWords") int version,
             @ForAll @Size(max = 600) byte[] sections) {
         byte[] data = new byte[4 + sections.length];
@@ -82,7 +82,7 @@ class PhyFuzzProperties {
         return d;
     }
 
-    @Property(tries = 5000)
+    @Property(tries = 3000)
     void damagedDocumentsAreReadOrRefused(@ForAll("damagedDocuments") byte[] data) {
         Corruption.readOrRefuse(strict, data);
         Corruption.readOrRefuse(lenient, data);
