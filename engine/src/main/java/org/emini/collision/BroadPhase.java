@@ -1,0 +1,1015 @@
+package org.emini.collision;
+
+import java.util.Arrays;
+import org.emini.math.EMath;
+
+/**
+ * The broadphase: a dynamic AABB tree of proxies with fat AABBs, a move buffer and pair
+ * generation for moved proxies only.
+ *
+ * <p>Each proxy stands for one collision shape. The tree stores a <em>fat</em> AABB per proxy: the
+ * tight AABB enlarged by {@code margin} on every side and, when the proxy is moved, stretched
+ * along the expected displacement. As long as a shape's tight AABB stays inside its fat AABB,
+ * {@link #moveProxy} does nothing, so resting and slowly moving bodies never touch the tree.
+ *
+ * <p>Leaves are inserted by the surface-area heuristic (in 2D, the perimeter) and the tree is kept
+ * balanced by AVL-like rotations on the way back up from every insertion and removal, so its
+ * height stays O(log n) even for sorted insertion orders.
+ *
+ * <p>Proxy ids are small non-negative ints, dense in {@code [0, peak proxy count)}; freed ids are
+ * reused last-freed first. Everything is deterministic: the same sequence of calls gives the same
+ * ids, the same tree and the same pairs in the same order.
+ *
+ * <p>Storage is a set of growable primitive arrays that double when full, so once they have grown
+ * to the size of the scene nothing is allocated. Queries walk the tree with an explicit stack kept
+ * as a field. The class is not thread-safe, and it must not be modified from inside its callbacks
+ * (doing so throws {@link IllegalStateException}).
+ */
+public final class BroadPhase {
+    /**
+     * How many steps of displacement a moved fat AABB is stretched by (Box2D v2 uses 4): a body
+     * moving steadily in a straight line is re-inserted only about every fourth step.
+     */
+    public static final float DISPLACEMENT_MULTIPLIER = 4f;
+
+    /**
+     * A fat AABB that still contains its shape is re-inserted anyway when it exceeds the new fat
+     * AABB by more than this many margins plus the stretch on some side (a fast body that has
+     * since slowed down).
+     */
+    private static final float SHRINK_MARGINS = 4f;
+
+    private static final int NULL = -1;
+    private static final int INITIAL_CAPACITY = 16;
+
+    private final float margin;
+
+    // Tree nodes, as parallel arrays indexed by node id. Leaves have height 0, free nodes -1.
+    private float[] nodeMinX;
+    private float[] nodeMinY;
+    private float[] nodeMaxX;
+    private float[] nodeMaxY;
+    /** Parent of a live node; next free node of a free one. */
+    private int[] nodeParent;
+    private int[] nodeChild1;
+    private int[] nodeChild2;
+    private int[] nodeHeight;
+    /** Proxy id of a leaf, NULL for internal and free nodes. */
+    private int[] nodeProxy;
+    private int nodeHighWater;
+    private int nodeCount;
+    private int freeNodeHead = NULL;
+    private int root = NULL;
+
+    // Proxies, indexed by proxy id. Kept apart from node ids so that proxy ids stay dense.
+    /** Leaf node of a live proxy, NULL for a free id. */
+    private int[] proxyNode;
+    private int[] proxyUserData;
+    /** Next free proxy id of a free id. */
+    private int[] proxyNextFree;
+    /** Index in the move buffer, NULL when the proxy has not moved since the last updatePairs. */
+    private int[] proxyMoveIndex;
+    private int proxyHighWater;
+    private int proxyCount;
+    private int freeProxyHead = NULL;
+
+    private int[] moveBuffer;
+    private int moveCount;
+
+    /** Pairs as (smaller id &lt;&lt; 32 | larger id), so that sorting the longs sorts the pairs. */
+    private long[] pairBuffer;
+    private int pairCount;
+
+    /** Query stack; queries may nest, each one using the entries above those of its caller. */
+    private int[] stack;
+    private int stackTop;
+
+    /** Number of callbacks currently running; the broadphase is read-only while it is positive. */
+    private int lockDepth;
+
+    /**
+     * Creates an empty broadphase.
+     *
+     * @param margin the distance (px) by which fat AABBs exceed the tight ones on every side;
+     *     finite and non-negative
+     * @throws IllegalArgumentException if margin is negative, NaN or infinite
+     */
+    public BroadPhase(float margin) {
+        if (!EMath.isFinite(margin) || margin < 0f) {
+            throw new IllegalArgumentException(
+                    "BroadPhase: margin (" + margin + ") must be finite and >= 0");
+        }
+        this.margin = margin;
+        nodeMinX = new float[INITIAL_CAPACITY];
+        nodeMinY = new float[INITIAL_CAPACITY];
+        nodeMaxX = new float[INITIAL_CAPACITY];
+        nodeMaxY = new float[INITIAL_CAPACITY];
+        nodeParent = new int[INITIAL_CAPACITY];
+        nodeChild1 = new int[INITIAL_CAPACITY];
+        nodeChild2 = new int[INITIAL_CAPACITY];
+        nodeHeight = new int[INITIAL_CAPACITY];
+        nodeProxy = new int[INITIAL_CAPACITY];
+        proxyNode = new int[INITIAL_CAPACITY];
+        proxyUserData = new int[INITIAL_CAPACITY];
+        proxyNextFree = new int[INITIAL_CAPACITY];
+        proxyMoveIndex = new int[INITIAL_CAPACITY];
+        moveBuffer = new int[INITIAL_CAPACITY];
+        pairBuffer = new long[INITIAL_CAPACITY];
+        stack = new int[INITIAL_CAPACITY];
+    }
+
+    /**
+     * The margin given to the constructor.
+     *
+     * @return the distance (px) by which fat AABBs exceed the tight ones
+     */
+    public float getMargin() {
+        return margin;
+    }
+
+    // ------------------------------------------------------------------------------------------
+    // Proxies
+
+    /**
+     * Creates a proxy and puts it in the move buffer, so that its pairs are reported by the next
+     * {@link #updatePairs}. Its fat AABB is the tight one enlarged by the margin.
+     *
+     * @param minX the left of the tight AABB
+     * @param minY the top of the tight AABB
+     * @param maxX the right of the tight AABB, at least minX
+     * @param maxY the bottom of the tight AABB, at least minY
+     * @param userData a value handed back with the proxy's pairs, typically a shape index
+     * @return the new proxy id: the most recently freed id, or else the smallest never used
+     * @throws IllegalArgumentException if a coordinate is NaN or infinite, or min &gt; max
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public int createProxy(float minX, float minY, float maxX, float maxY, int userData) {
+        checkUnlocked("createProxy");
+        checkBox("createProxy", minX, minY, maxX, maxY);
+        int proxyId = allocateProxy();
+        int leaf = allocateNode();
+        nodeMinX[leaf] = minX - margin;
+        nodeMinY[leaf] = minY - margin;
+        nodeMaxX[leaf] = maxX + margin;
+        nodeMaxY[leaf] = maxY + margin;
+        nodeChild1[leaf] = NULL;
+        nodeChild2[leaf] = NULL;
+        nodeHeight[leaf] = 0;
+        nodeProxy[leaf] = proxyId;
+        proxyNode[proxyId] = leaf;
+        proxyUserData[proxyId] = userData;
+        proxyMoveIndex[proxyId] = NULL;
+        insertLeaf(leaf);
+        bufferMove(proxyId);
+        return proxyId;
+    }
+
+    /**
+     * Destroys a proxy; its id may be returned by a later {@link #createProxy}. It leaves the move
+     * buffer, so the next {@link #updatePairs} reports no pair with it.
+     *
+     * @param proxyId a live proxy id
+     * @throws IllegalArgumentException if the id is unknown or already destroyed
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public void destroyProxy(int proxyId) {
+        checkUnlocked("destroyProxy");
+        checkProxy("destroyProxy", proxyId);
+        unbufferMove(proxyId);
+        int leaf = proxyNode[proxyId];
+        removeLeaf(leaf);
+        releaseNode(leaf);
+        proxyNode[proxyId] = NULL;
+        proxyNextFree[proxyId] = freeProxyHead;
+        freeProxyHead = proxyId;
+        proxyCount--;
+    }
+
+    /**
+     * Updates a proxy after its shape moved.
+     *
+     * <p>If the tight AABB is still inside the fat one, nothing happens and false is returned;
+     * this is the common case for resting and slowly moving shapes. Otherwise the proxy gets the
+     * fat AABB {@code tight + margin}, stretched on the side the shape moves towards by
+     * {@link #DISPLACEMENT_MULTIPLIER} times the displacement, is re-inserted in the tree and put
+     * in the move buffer, and true is returned.
+     *
+     * <p>One more case re-inserts, as in Box2D v2.4: the tight AABB is inside the fat one, but the
+     * fat one exceeds the fat AABB just described, on some side, by more than four margins plus
+     * the stretch along that axis. This happens after a fast shape slowed down; such stale
+     * oversized boxes would otherwise report needless pairs for ever.
+     *
+     * @param proxyId a live proxy id
+     * @param minX the left of the new tight AABB
+     * @param minY the top of the new tight AABB
+     * @param maxX the right of the new tight AABB, at least minX
+     * @param maxY the bottom of the new tight AABB, at least minY
+     * @param dx the expected x displacement of the shape during the next step (px)
+     * @param dy the expected y displacement of the shape during the next step (px)
+     * @return true if the proxy was re-inserted (and its pairs will be reported), false if not
+     * @throws IllegalArgumentException if the id is unknown or destroyed, a value is NaN or
+     *     infinite, or min &gt; max
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public boolean moveProxy(
+            int proxyId, float minX, float minY, float maxX, float maxY, float dx, float dy) {
+        checkUnlocked("moveProxy");
+        checkProxy("moveProxy", proxyId);
+        checkBox("moveProxy", minX, minY, maxX, maxY);
+        checkFinite("moveProxy", "dx", dx);
+        checkFinite("moveProxy", "dy", dy);
+        int leaf = proxyNode[proxyId];
+
+        float fatMinX = minX - margin;
+        float fatMinY = minY - margin;
+        float fatMaxX = maxX + margin;
+        float fatMaxY = maxY + margin;
+        float ex = DISPLACEMENT_MULTIPLIER * dx;
+        float ey = DISPLACEMENT_MULTIPLIER * dy;
+        if (ex < 0f) {
+            fatMinX += ex;
+        } else {
+            fatMaxX += ex;
+        }
+        if (ey < 0f) {
+            fatMinY += ey;
+        } else {
+            fatMaxY += ey;
+        }
+
+        float oldMinX = nodeMinX[leaf];
+        float oldMinY = nodeMinY[leaf];
+        float oldMaxX = nodeMaxX[leaf];
+        float oldMaxY = nodeMaxY[leaf];
+        if (oldMinX <= minX && oldMinY <= minY && maxX <= oldMaxX && maxY <= oldMaxY) {
+            // The stretch is added to the slack so that a steadily moving shape, whose old box
+            // trails behind, is re-inserted only when it leaves its box.
+            float slackX = SHRINK_MARGINS * margin + Math.abs(ex);
+            float slackY = SHRINK_MARGINS * margin + Math.abs(ey);
+            if (fatMinX - slackX <= oldMinX && fatMinY - slackY <= oldMinY
+                    && oldMaxX <= fatMaxX + slackX && oldMaxY <= fatMaxY + slackY) {
+                return false;
+            }
+        }
+
+        removeLeaf(leaf);
+        nodeMinX[leaf] = fatMinX;
+        nodeMinY[leaf] = fatMinY;
+        nodeMaxX[leaf] = fatMaxX;
+        nodeMaxY[leaf] = fatMaxY;
+        insertLeaf(leaf);
+        bufferMove(proxyId);
+        return true;
+    }
+
+    /**
+     * Puts a proxy in the move buffer without changing its AABB, so that the next
+     * {@link #updatePairs} reports its pairs again (for example after a filter change).
+     *
+     * @param proxyId a live proxy id
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public void touchProxy(int proxyId) {
+        checkUnlocked("touchProxy");
+        checkProxy("touchProxy", proxyId);
+        bufferMove(proxyId);
+    }
+
+    /**
+     * Whether the fat AABBs of two proxies overlap; boxes that only touch overlap.
+     *
+     * @param proxyA a live proxy id
+     * @param proxyB a live proxy id
+     * @return true if the fat AABBs overlap
+     * @throws IllegalArgumentException if an id is unknown or destroyed
+     */
+    public boolean testOverlap(int proxyA, int proxyB) {
+        checkProxy("testOverlap", proxyA);
+        checkProxy("testOverlap", proxyB);
+        int a = proxyNode[proxyA];
+        int b = proxyNode[proxyB];
+        return nodeMinX[a] <= nodeMaxX[b] && nodeMinX[b] <= nodeMaxX[a]
+                && nodeMinY[a] <= nodeMaxY[b] && nodeMinY[b] <= nodeMaxY[a];
+    }
+
+    // ------------------------------------------------------------------------------------------
+    // Pairs and queries
+
+    /**
+     * Reports the pairs of the proxies moved since the last call, then empties the move buffer.
+     *
+     * <p>For every proxy in the move buffer (created, moved by {@link #moveProxy} returning true,
+     * or touched, and not destroyed since), the tree is queried with its fat AABB. Every pair of
+     * distinct proxies whose fat AABBs overlap and of which at least one is in the move buffer is
+     * reported exactly once, in increasing order of (smaller id, larger id), with the user data of
+     * the smaller id first. No other pair is reported.
+     *
+     * @param callback receives the pairs; it must not modify this broadphase
+     * @throws IllegalArgumentException if callback is null
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public void updatePairs(PairCallback callback) {
+        checkUnlocked("updatePairs");
+        if (callback == null) {
+            throw new IllegalArgumentException("updatePairs: callback is null");
+        }
+        pairCount = 0;
+        for (int i = 0; i < moveCount; i++) {
+            collectPairs(moveBuffer[i]);
+        }
+        // Emptied before the callbacks run, so that a throwing callback leaves a clean state.
+        for (int i = 0; i < moveCount; i++) {
+            proxyMoveIndex[moveBuffer[i]] = NULL;
+        }
+        moveCount = 0;
+        heapSort(pairBuffer, pairCount);
+
+        lockDepth++;
+        try {
+            for (int i = 0; i < pairCount; i++) {
+                long key = pairBuffer[i];
+                callback.addPair(proxyUserData[(int) (key >>> 32)], proxyUserData[(int) key]);
+            }
+        } finally {
+            lockDepth--;
+        }
+    }
+
+    /** Adds to the pair buffer the pairs of one moved proxy that it owns. */
+    private void collectPairs(int queryProxy) {
+        int queryNode = proxyNode[queryProxy];
+        float minX = nodeMinX[queryNode];
+        float minY = nodeMinY[queryNode];
+        float maxX = nodeMaxX[queryNode];
+        float maxY = nodeMaxY[queryNode];
+        int base = stackTop;
+        push(root);
+        while (stackTop > base) {
+            int node = stack[--stackTop];
+            if (nodeMinX[node] > maxX || minX > nodeMaxX[node]
+                    || nodeMinY[node] > maxY || minY > nodeMaxY[node]) {
+                continue;
+            }
+            if (nodeHeight[node] > 0) {
+                push(nodeChild1[node]);
+                push(nodeChild2[node]);
+                continue;
+            }
+            int other = nodeProxy[node];
+            // When both moved, the pair is reported while querying the smaller id only.
+            if (other == queryProxy || (other < queryProxy && proxyMoveIndex[other] != NULL)) {
+                continue;
+            }
+            if (pairCount == pairBuffer.length) {
+                pairBuffer = Arrays.copyOf(pairBuffer, pairCount * 2);
+            }
+            pairBuffer[pairCount++] = other < queryProxy
+                    ? ((long) other << 32) | queryProxy
+                    : ((long) queryProxy << 32) | other;
+        }
+    }
+
+    /**
+     * Reports every proxy whose fat AABB overlaps a box (touching counts), in tree order, until
+     * the callback returns false.
+     *
+     * @param minX the left of the box
+     * @param minY the top of the box
+     * @param maxX the right of the box, at least minX
+     * @param maxY the bottom of the box, at least minY
+     * @param callback receives the proxy ids; it must not modify this broadphase but may query it
+     * @throws IllegalArgumentException if a coordinate is NaN or infinite, min &gt; max, or callback
+     *     is null
+     */
+    public void query(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        checkBox("query", minX, minY, maxX, maxY);
+        if (callback == null) {
+            throw new IllegalArgumentException("query: callback is null");
+        }
+        int base = stackTop;
+        lockDepth++;
+        try {
+            push(root);
+            while (stackTop > base) {
+                int node = stack[--stackTop];
+                if (nodeMinX[node] > maxX || minX > nodeMaxX[node]
+                        || nodeMinY[node] > maxY || minY > nodeMaxY[node]) {
+                    continue;
+                }
+                if (nodeHeight[node] > 0) {
+                    push(nodeChild1[node]);
+                    push(nodeChild2[node]);
+                } else if (!callback.reportProxy(nodeProxy[node])) {
+                    return;
+                }
+            }
+        } finally {
+            stackTop = base;
+            lockDepth--;
+        }
+    }
+
+    /** Pushes a node on the query stack; the empty tree's NULL root is not pushed. */
+    private void push(int node) {
+        if (node == NULL) {
+            return;
+        }
+        if (stackTop == stack.length) {
+            stack = Arrays.copyOf(stack, stackTop * 2);
+        }
+        stack[stackTop++] = node;
+    }
+
+    // ------------------------------------------------------------------------------------------
+    // Accessors
+
+    /**
+     * The user data given when the proxy was created.
+     *
+     * @param proxyId a live proxy id
+     * @return its user data
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     */
+    public int getUserData(int proxyId) {
+        checkProxy("getUserData", proxyId);
+        return proxyUserData[proxyId];
+    }
+
+    /**
+     * The left of a proxy's fat AABB.
+     *
+     * @param proxyId a live proxy id
+     * @return the fat AABB's minimum x
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     */
+    public float getFatMinX(int proxyId) {
+        checkProxy("getFatMinX", proxyId);
+        return nodeMinX[proxyNode[proxyId]];
+    }
+
+    /**
+     * The top of a proxy's fat AABB.
+     *
+     * @param proxyId a live proxy id
+     * @return the fat AABB's minimum y
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     */
+    public float getFatMinY(int proxyId) {
+        checkProxy("getFatMinY", proxyId);
+        return nodeMinY[proxyNode[proxyId]];
+    }
+
+    /**
+     * The right of a proxy's fat AABB.
+     *
+     * @param proxyId a live proxy id
+     * @return the fat AABB's maximum x
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     */
+    public float getFatMaxX(int proxyId) {
+        checkProxy("getFatMaxX", proxyId);
+        return nodeMaxX[proxyNode[proxyId]];
+    }
+
+    /**
+     * The bottom of a proxy's fat AABB.
+     *
+     * @param proxyId a live proxy id
+     * @return the fat AABB's maximum y
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     */
+    public float getFatMaxY(int proxyId) {
+        checkProxy("getFatMaxY", proxyId);
+        return nodeMaxY[proxyNode[proxyId]];
+    }
+
+    /**
+     * Whether a proxy is in the move buffer, that is, will have its pairs reported by the next
+     * {@link #updatePairs}.
+     *
+     * @param proxyId a live proxy id
+     * @return true if the proxy was created, re-inserted or touched since the last updatePairs
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     */
+    public boolean isMoved(int proxyId) {
+        checkProxy("isMoved", proxyId);
+        return proxyMoveIndex[proxyId] != NULL;
+    }
+
+    /**
+     * The number of live proxies.
+     *
+     * @return the proxy count
+     */
+    public int getProxyCount() {
+        return proxyCount;
+    }
+
+    /**
+     * The height of the tree: 0 for an empty tree or a single proxy, otherwise the number of edges
+     * on the longest path from the root to a leaf.
+     *
+     * @return the tree height
+     */
+    public int getTreeHeight() {
+        return root == NULL ? 0 : nodeHeight[root];
+    }
+
+    /**
+     * The number of proxies in the move buffer (each counted once however often it moved).
+     *
+     * @return the number of proxies whose pairs the next {@link #updatePairs} reports
+     */
+    public int getMoveCount() {
+        return moveCount;
+    }
+
+    /**
+     * Moves the origin of the coordinate system: every fat AABB is translated by (−dx, −dy), so
+     * a point at (dx, dy) moves to (0, 0). Useful to keep float precision in worlds far from the
+     * origin; the caller shifts its bodies by the same amount.
+     *
+     * @param dx the x of the new origin in the old coordinates
+     * @param dy the y of the new origin in the old coordinates
+     * @throws IllegalArgumentException if dx or dy is NaN or infinite
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public void shiftOrigin(float dx, float dy) {
+        checkUnlocked("shiftOrigin");
+        checkFinite("shiftOrigin", "dx", dx);
+        checkFinite("shiftOrigin", "dy", dy);
+        // Rounding is monotonic, so every internal box still encloses (and equals the union of)
+        // its shifted children.
+        for (int i = 0; i < nodeHighWater; i++) {
+            if (nodeHeight[i] >= 0) {
+                nodeMinX[i] -= dx;
+                nodeMinY[i] -= dy;
+                nodeMaxX[i] -= dx;
+                nodeMaxY[i] -= dy;
+            }
+        }
+    }
+
+    // ------------------------------------------------------------------------------------------
+    // Tree
+
+    private int allocateNode() {
+        int node;
+        if (freeNodeHead != NULL) {
+            node = freeNodeHead;
+            freeNodeHead = nodeParent[node];
+        } else {
+            if (nodeHighWater == nodeHeight.length) {
+                growNodes();
+            }
+            node = nodeHighWater++;
+        }
+        nodeParent[node] = NULL;
+        nodeChild1[node] = NULL;
+        nodeChild2[node] = NULL;
+        nodeHeight[node] = 0;
+        nodeProxy[node] = NULL;
+        nodeCount++;
+        return node;
+    }
+
+    private void releaseNode(int node) {
+        nodeParent[node] = freeNodeHead;
+        nodeChild1[node] = NULL;
+        nodeChild2[node] = NULL;
+        nodeHeight[node] = -1;
+        nodeProxy[node] = NULL;
+        freeNodeHead = node;
+        nodeCount--;
+    }
+
+    private void growNodes() {
+        int capacity = nodeHeight.length * 2;
+        nodeMinX = Arrays.copyOf(nodeMinX, capacity);
+        nodeMinY = Arrays.copyOf(nodeMinY, capacity);
+        nodeMaxX = Arrays.copyOf(nodeMaxX, capacity);
+        nodeMaxY = Arrays.copyOf(nodeMaxY, capacity);
+        nodeParent = Arrays.copyOf(nodeParent, capacity);
+        nodeChild1 = Arrays.copyOf(nodeChild1, capacity);
+        nodeChild2 = Arrays.copyOf(nodeChild2, capacity);
+        nodeHeight = Arrays.copyOf(nodeHeight, capacity);
+        nodeProxy = Arrays.copyOf(nodeProxy, capacity);
+    }
+
+    /**
+     * Inserts a leaf whose box is set. The sibling is found by descending from the root towards
+     * the child whose perimeter grows least, stopping where pairing up with the current node is
+     * cheaper than any descent (the surface-area heuristic, with perimeter as area in 2D).
+     */
+    private void insertLeaf(int leaf) {
+        if (root == NULL) {
+            root = leaf;
+            nodeParent[leaf] = NULL;
+            return;
+        }
+        float minX = nodeMinX[leaf];
+        float minY = nodeMinY[leaf];
+        float maxX = nodeMaxX[leaf];
+        float maxY = nodeMaxY[leaf];
+
+        int index = root;
+        while (nodeHeight[index] > 0) {
+            int child1 = nodeChild1[index];
+            int child2 = nodeChild2[index];
+            float combined = unionPerimeter(index, minX, minY, maxX, maxY);
+            // Cost of a new parent for this node and the leaf.
+            float cost = 2f * combined;
+            // Every ancestor below here also grows by this much.
+            float inheritance = 2f * (combined - perimeter(index));
+            float cost1 = descentCost(child1, minX, minY, maxX, maxY) + inheritance;
+            float cost2 = descentCost(child2, minX, minY, maxX, maxY) + inheritance;
+            if (cost < cost1 && cost < cost2) {
+                break;
+            }
+            index = cost1 < cost2 ? child1 : child2;
+        }
+
+        int sibling = index;
+        int oldParent = nodeParent[sibling];
+        int newParent = allocateNode();
+        nodeParent[newParent] = oldParent;
+        nodeChild1[newParent] = sibling;
+        nodeChild2[newParent] = leaf;
+        nodeParent[sibling] = newParent;
+        nodeParent[leaf] = newParent;
+        if (oldParent == NULL) {
+            root = newParent;
+        } else if (nodeChild1[oldParent] == sibling) {
+            nodeChild1[oldParent] = newParent;
+        } else {
+            nodeChild2[oldParent] = newParent;
+        }
+        refitUpwards(newParent);
+    }
+
+    /** Detaches a leaf from the tree (the leaf node itself stays allocated). */
+    private void removeLeaf(int leaf) {
+        if (leaf == root) {
+            root = NULL;
+            return;
+        }
+        int parent = nodeParent[leaf];
+        int grandParent = nodeParent[parent];
+        int sibling = nodeChild1[parent] == leaf ? nodeChild2[parent] : nodeChild1[parent];
+        nodeParent[leaf] = NULL;
+        releaseNode(parent);
+        nodeParent[sibling] = grandParent;
+        if (grandParent == NULL) {
+            root = sibling;
+            return;
+        }
+        if (nodeChild1[grandParent] == parent) {
+            nodeChild1[grandParent] = sibling;
+        } else {
+            nodeChild2[grandParent] = sibling;
+        }
+        refitUpwards(grandParent);
+    }
+
+    /** Rebalances and refits every node from {@code index} up to the root. */
+    private void refitUpwards(int index) {
+        while (index != NULL) {
+            index = balance(index);
+            refit(index);
+            index = nodeParent[index];
+        }
+    }
+
+    /** Recomputes an internal node's box and height from its children. */
+    private void refit(int node) {
+        int c1 = nodeChild1[node];
+        int c2 = nodeChild2[node];
+        nodeMinX[node] = min(nodeMinX[c1], nodeMinX[c2]);
+        nodeMinY[node] = min(nodeMinY[c1], nodeMinY[c2]);
+        nodeMaxX[node] = max(nodeMaxX[c1], nodeMaxX[c2]);
+        nodeMaxY[node] = max(nodeMaxY[c1], nodeMaxY[c2]);
+        nodeHeight[node] = 1 + Math.max(nodeHeight[c1], nodeHeight[c2]);
+    }
+
+    /**
+     * If the children's heights of {@code a} differ by more than one, rotates the taller child up
+     * into a's place and returns it; otherwise returns a. The children of a must be up to date.
+     */
+    private int balance(int a) {
+        // a's own height may be stale (a new parent), so only its children's heights are used.
+        int b = nodeChild1[a];
+        int c = nodeChild2[a];
+        int diff = nodeHeight[c] - nodeHeight[b];
+        if (diff > 1) {
+            return rotateUp(a, c, true);
+        }
+        if (diff < -1) {
+            return rotateUp(a, b, false);
+        }
+        return a;
+    }
+
+    /**
+     * Rotates child p of a into a's place: p's taller child stays with p, a becomes p's other
+     * child and takes p's shorter child in the slot where p was.
+     */
+    private int rotateUp(int a, int p, boolean pIsChild2) {
+        int f = nodeChild1[p];
+        int g = nodeChild2[p];
+        int keep;
+        int give;
+        if (nodeHeight[f] > nodeHeight[g]) {
+            keep = f;
+            give = g;
+        } else {
+            keep = g;
+            give = f;
+        }
+        int up = nodeParent[a];
+        nodeParent[p] = up;
+        if (up == NULL) {
+            root = p;
+        } else if (nodeChild1[up] == a) {
+            nodeChild1[up] = p;
+        } else {
+            nodeChild2[up] = p;
+        }
+        nodeChild1[p] = a;
+        nodeChild2[p] = keep;
+        nodeParent[keep] = p;
+        nodeParent[a] = p;
+        if (pIsChild2) {
+            nodeChild2[a] = give;
+        } else {
+            nodeChild1[a] = give;
+        }
+        nodeParent[give] = a;
+        refit(a);
+        refit(p);
+        return p;
+    }
+
+    /** Cost of inserting the leaf box somewhere below {@code child} (excluding inheritance). */
+    private float descentCost(int child, float minX, float minY, float maxX, float maxY) {
+        float combined = unionPerimeter(child, minX, minY, maxX, maxY);
+        // A leaf would get a new parent of this perimeter; an internal node merely grows.
+        return nodeHeight[child] == 0 ? combined : combined - perimeter(child);
+    }
+
+    private float perimeter(int node) {
+        return 2f * ((nodeMaxX[node] - nodeMinX[node]) + (nodeMaxY[node] - nodeMinY[node]));
+    }
+
+    private float unionPerimeter(int node, float minX, float minY, float maxX, float maxY) {
+        float w = max(nodeMaxX[node], maxX) - min(nodeMinX[node], minX);
+        float h = max(nodeMaxY[node], maxY) - min(nodeMinY[node], minY);
+        return 2f * (w + h);
+    }
+
+    private static float min(float a, float b) {
+        return a < b ? a : b;
+    }
+
+    private static float max(float a, float b) {
+        return a > b ? a : b;
+    }
+
+    // ------------------------------------------------------------------------------------------
+    // Proxy ids and the move buffer
+
+    private int allocateProxy() {
+        int proxyId;
+        if (freeProxyHead != NULL) {
+            proxyId = freeProxyHead;
+            freeProxyHead = proxyNextFree[proxyId];
+        } else {
+            if (proxyHighWater == proxyNode.length) {
+                int capacity = proxyHighWater * 2;
+                proxyNode = Arrays.copyOf(proxyNode, capacity);
+                proxyUserData = Arrays.copyOf(proxyUserData, capacity);
+                proxyNextFree = Arrays.copyOf(proxyNextFree, capacity);
+                proxyMoveIndex = Arrays.copyOf(proxyMoveIndex, capacity);
+            }
+            proxyId = proxyHighWater++;
+        }
+        proxyNextFree[proxyId] = NULL;
+        proxyCount++;
+        return proxyId;
+    }
+
+    private void bufferMove(int proxyId) {
+        if (proxyMoveIndex[proxyId] != NULL) {
+            return;
+        }
+        if (moveCount == moveBuffer.length) {
+            moveBuffer = Arrays.copyOf(moveBuffer, moveCount * 2);
+        }
+        proxyMoveIndex[proxyId] = moveCount;
+        moveBuffer[moveCount++] = proxyId;
+    }
+
+    /** Removes a proxy from the move buffer by moving the last entry into its slot. */
+    private void unbufferMove(int proxyId) {
+        int index = proxyMoveIndex[proxyId];
+        if (index == NULL) {
+            return;
+        }
+        int last = moveBuffer[--moveCount];
+        moveBuffer[index] = last;
+        proxyMoveIndex[last] = index;
+        proxyMoveIndex[proxyId] = NULL;
+    }
+
+    /**
+     * Sorts the first n longs ascending in place: heapsort needs no scratch memory and no
+     * recursion (java.util.Arrays.sort may allocate a merge buffer for partly sorted input).
+     */
+    private static void heapSort(long[] a, int n) {
+        for (int i = n / 2 - 1; i >= 0; i--) {
+            siftDown(a, i, n);
+        }
+        for (int end = n - 1; end > 0; end--) {
+            long top = a[0];
+            a[0] = a[end];
+            a[end] = top;
+            siftDown(a, 0, end);
+        }
+    }
+
+    private static void siftDown(long[] a, int i, int n) {
+        long value = a[i];
+        int child = 2 * i + 1;
+        while (child < n) {
+            if (child + 1 < n && a[child + 1] > a[child]) {
+                child++;
+            }
+            if (a[child] <= value) {
+                break;
+            }
+            a[i] = a[child];
+            i = child;
+            child = 2 * i + 1;
+        }
+        a[i] = value;
+    }
+
+    // ------------------------------------------------------------------------------------------
+    // Validation
+
+    /**
+     * Checks every invariant of the tree, the proxy table, the free lists and the move buffer.
+     * Meant for tests and debugging; it takes time linear in the number of nodes.
+     *
+     * @throws IllegalStateException describing the first violation found
+     */
+    public void validate() {
+        int reachable = 0;
+        int leaves = 0;
+        if (root != NULL) {
+            checkState(root >= 0 && root < nodeHighWater, "root %d out of range", root, 0);
+            checkState(nodeParent[root] == NULL, "root %d has parent %d", root, nodeParent[root]);
+            int base = stackTop;
+            try {
+                push(root);
+                while (stackTop > base) {
+                    int node = stack[--stackTop];
+                    reachable++;
+                    checkState(reachable <= nodeHighWater, "cycle through node %d", node, 0);
+                    int height = nodeHeight[node];
+                    int c1 = nodeChild1[node];
+                    int c2 = nodeChild2[node];
+                    checkState(height >= 0, "free node %d is in the tree", node, 0);
+                    if (height == 0) {
+                        leaves++;
+                        checkState(c1 == NULL && c2 == NULL, "leaf %d has child %d", node,
+                                c1 != NULL ? c1 : c2);
+                        int proxy = nodeProxy[node];
+                        checkState(proxy >= 0 && proxy < proxyHighWater
+                                && proxyNode[proxy] == node,
+                                "leaf %d has proxy %d not pointing back", node, proxy);
+                        continue;
+                    }
+                    checkState(nodeProxy[node] == NULL, "internal node %d has proxy %d", node,
+                            nodeProxy[node]);
+                    checkState(c1 >= 0 && c1 < nodeHighWater, "node %d has bad child1 %d", node,
+                            c1);
+                    checkState(c2 >= 0 && c2 < nodeHighWater, "node %d has bad child2 %d", node,
+                            c2);
+                    checkState(c1 != c2, "node %d has child %d twice", node, c1);
+                    checkState(nodeParent[c1] == node, "child %d of node %d has another parent",
+                            c1, node);
+                    checkState(nodeParent[c2] == node, "child %d of node %d has another parent",
+                            c2, node);
+                    checkState(nodeHeight[c1] >= 0 && nodeHeight[c2] >= 0,
+                            "node %d has a free child (%d)", node, nodeHeight[c1] < 0 ? c1 : c2);
+                    checkState(height == 1 + Math.max(nodeHeight[c1], nodeHeight[c2]),
+                            "node %d has wrong height %d", node, height);
+                    checkState(nodeMinX[node] == min(nodeMinX[c1], nodeMinX[c2])
+                            && nodeMinY[node] == min(nodeMinY[c1], nodeMinY[c2])
+                            && nodeMaxX[node] == max(nodeMaxX[c1], nodeMaxX[c2])
+                            && nodeMaxY[node] == max(nodeMaxY[c1], nodeMaxY[c2]),
+                            "box of node %d is not the union of its children's (height %d)",
+                            node, height);
+                    push(c1);
+                    push(c2);
+                }
+            } finally {
+                stackTop = base;
+            }
+        }
+        checkState(reachable == nodeCount, "%d nodes in the tree but %d allocated", reachable,
+                nodeCount);
+        checkState(leaves == proxyCount, "%d leaves but %d proxies", leaves, proxyCount);
+
+        int free = 0;
+        for (int node = freeNodeHead; node != NULL; node = nodeParent[node]) {
+            checkState(node >= 0 && node < nodeHighWater, "free node %d out of range", node, 0);
+            checkState(nodeHeight[node] == -1, "node %d on the free list has height %d", node,
+                    nodeHeight[node]);
+            free++;
+            checkState(free <= nodeHighWater - nodeCount, "node free list too long at %d", node,
+                    free);
+        }
+        checkState(free + nodeCount == nodeHighWater, "%d free nodes, expected %d", free,
+                nodeHighWater - nodeCount);
+
+        int live = 0;
+        int moved = 0;
+        for (int p = 0; p < proxyHighWater; p++) {
+            int node = proxyNode[p];
+            if (node == NULL) {
+                checkState(proxyMoveIndex[p] == NULL, "free proxy %d is in the move buffer", p,
+                        0);
+                continue;
+            }
+            live++;
+            checkState(node >= 0 && node < nodeHighWater && nodeHeight[node] == 0
+                    && nodeProxy[node] == p, "proxy %d points to node %d, not its leaf", p, node);
+            int index = proxyMoveIndex[p];
+            if (index != NULL) {
+                moved++;
+                checkState(index >= 0 && index < moveCount && moveBuffer[index] == p,
+                        "proxy %d has bad move index %d", p, index);
+            }
+        }
+        checkState(live == proxyCount, "%d live proxies, count says %d", live, proxyCount);
+        checkState(moved == moveCount, "%d moved proxies, move count says %d", moved, moveCount);
+
+        int freeProxies = 0;
+        for (int p = freeProxyHead; p != NULL; p = proxyNextFree[p]) {
+            checkState(p >= 0 && p < proxyHighWater && proxyNode[p] == NULL,
+                    "proxy free list holds live or bad id %d", p, 0);
+            freeProxies++;
+            checkState(freeProxies <= proxyHighWater - proxyCount,
+                    "proxy free list too long at %d", p, freeProxies);
+        }
+        checkState(freeProxies + proxyCount == proxyHighWater, "%d free proxy ids, expected %d",
+                freeProxies, proxyHighWater - proxyCount);
+    }
+
+    private static void checkState(boolean ok, String format, int a, int b) {
+        if (!ok) {
+            throw new IllegalStateException("BroadPhase.validate: " + String.format(format, a, b));
+        }
+    }
+
+    // ------------------------------------------------------------------------------------------
+    // Argument checks
+
+    private void checkUnlocked(String method) {
+        if (lockDepth > 0) {
+            throw new IllegalStateException(
+                    method + ": the broadphase must not be modified from inside a callback");
+        }
+    }
+
+    private void checkProxy(String method, int proxyId) {
+        if (proxyId < 0 || proxyId >= proxyHighWater || proxyNode[proxyId] == NULL) {
+            throw new IllegalArgumentException(
+                    method + ": unknown or destroyed proxy id " + proxyId);
+        }
+    }
+
+    private static void checkBox(String method, float minX, float minY, float maxX, float maxY) {
+        checkFinite(method, "minX", minX);
+        checkFinite(method, "minY", minY);
+        checkFinite(method, "maxX", maxX);
+        checkFinite(method, "maxY", maxY);
+        if (minX > maxX) {
+            throw new IllegalArgumentException(
+                    method + ": minX (" + minX + ") > maxX (" + maxX + ")");
+        }
+        if (minY > maxY) {
+            throw new IllegalArgumentException(
+                    method + ": minY (" + minY + ") > maxY (" + maxY + ")");
+        }
+    }
+
+    private static void checkFinite(String method, String name, float value) {
+        if (!EMath.isFinite(value)) {
+            throw new IllegalArgumentException(
+                    method + ": " + name + " (" + value + ") is not finite");
+        }
+    }
+}
