@@ -21,6 +21,11 @@ final class Segments {
         return d3 <= 0 && d4 >= 0 || d3 >= 0 && d4 <= 0;
     }
 
+    /** The side of the line a→b a point is on: −1, 0 (on the line) or 1. */
+    static int side(double ax, double ay, double bx, double by, double px, double py) {
+        return (int) Math.signum(orient(ax, ay, bx, by, px, py));
+    }
+
     private static double orient(double ax, double ay, double bx, double by, double cx, double cy) {
         return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
     }

@@ -11,11 +11,14 @@ import org.emini.harness.scenario.MetricSpec;
  * during one tick (its path from the previous tick's position to the new one intersects the line).
  * A wall given as a body is the long axis of its shape's bounding box through the box's centre, moving
  * with the body; a body that hits a wall and is pushed back out never crosses that line, one that ends
- * on the far side did pass through. Checked after every tick.
+ * on the far side did pass through. A centre that lands exactly on the line counts as still on its
+ * previous side, so a crossing is counted once, when the centre reaches the other side. Checked after
+ * every tick.
  */
 final class TunnellingMetric implements Metric {
     private final Body[] watched;
-    private final double[] previous;
+    // Per (wall, body): the last position that was strictly on one side of the wall line.
+    private final double[][] previous;
     private final List<Wall> walls = new ArrayList<>();
     private int count;
 
@@ -35,14 +38,12 @@ final class TunnellingMetric implements Metric {
             }
         }
         watched = list.toArray(new Body[0]);
-        previous = new double[watched.length * 2];
-        remember();
-    }
-
-    private void remember() {
-        for (int i = 0; i < watched.length; i++) {
-            previous[2 * i] = watched[i].getX();
-            previous[2 * i + 1] = watched[i].getY();
+        previous = new double[walls.size()][watched.length * 2];
+        for (double[] p : previous) {
+            for (int i = 0; i < watched.length; i++) {
+                p[2 * i] = watched[i].getX();
+                p[2 * i + 1] = watched[i].getY();
+            }
         }
     }
 
@@ -53,16 +54,21 @@ final class TunnellingMetric implements Metric {
 
     @Override
     public void afterTick() {
-        for (Wall wall : walls) {
-            double[] line = wall.line();
+        for (int w = 0; w < walls.size(); w++) {
+            double[] line = walls.get(w).line();
+            double[] p = previous[w];
             for (int i = 0; i < watched.length; i++) {
-                if (Segments.cross(previous[2 * i], previous[2 * i + 1], watched[i].getX(), watched[i].getY(),
-                        line[0], line[1], line[2], line[3])) {
+                double x = watched[i].getX();
+                double y = watched[i].getY();
+                if (Segments.cross(p[2 * i], p[2 * i + 1], x, y, line[0], line[1], line[2], line[3])) {
                     count++;
+                }
+                if (Segments.side(line[0], line[1], line[2], line[3], x, y) != 0) {
+                    p[2 * i] = x;
+                    p[2 * i + 1] = y;
                 }
             }
         }
-        remember();
     }
 
     @Override
