@@ -1,0 +1,670 @@
+package org.emini.dynamics;
+
+import org.emini.math.EMath;
+import org.emini.shape.Shape;
+
+/**
+ * A rigid body: a shape placed in the world with a position, an angle and velocities.
+ *
+ * <p>The body's position is the shape's local origin, which is also its centre of mass and centre
+ * of rotation (as in the original engine). Angles are in radians; a rotation by θ maps a local point
+ * (x, y) to (x·cosθ − y·sinθ, x·sinθ + y·cosθ), so on a y-down screen a growing angle (a positive
+ * angular velocity) turns the body clockwise.
+ *
+ * <p>Static bodies never move and have infinite mass whatever their shape's mass. Dynamic bodies
+ * move under gravity, contacts, constraints and the forces applied to them. All setters refuse NaN
+ * and infinite values with an {@link IllegalArgumentException} naming the call.
+ */
+public final class Body {
+    private Shape shape;
+    private boolean dynamic;
+    private boolean rotatable = true;
+    private boolean interacting = true;
+    private boolean gravityAffected = true;
+    private int layers;
+    private Object userData;
+
+    // State: position of the shape origin (px), accumulated angle (rad) and its rotation (c, s).
+    float x;
+    float y;
+    float angle;
+    float c = 1f;
+    float s;
+    float vx;
+    float vy;
+    float w;
+
+    // Accumulated force (mass·px/s²) and torque for the next tick; cleared by the tick.
+    float forceX;
+    float forceY;
+    float torque;
+
+    // Bookkeeping owned by the world.
+    World world;
+    int id = -1;
+    int worldIndex = -1;
+    int proxyId = -1;
+    int slot = -1;
+    boolean proxyDirty;
+    int solverIndex;
+    Contact contactList;
+    int contactCount;
+
+    /**
+     * Creates a body.
+     *
+     * @param x the x position of the shape's origin (px)
+     * @param y the y position of the shape's origin (px)
+     * @param shape the shape, which may be shared by many bodies
+     * @param dynamic true for a body that moves, false for a static body
+     */
+    public Body(float x, float y, Shape shape, boolean dynamic) {
+        this.shape = Check.notNull("Body(x, y, shape, dynamic)", "shape", shape);
+        this.x = Check.finite("Body(x, y, shape, dynamic)", "x", x);
+        this.y = Check.finite("Body(x, y, shape, dynamic)", "y", y);
+        this.dynamic = dynamic;
+    }
+
+    /**
+     * Creates a copy of a body (same shape, which is shared, same state and flags, same user data),
+     * not yet in any world.
+     *
+     * @param other the body to copy
+     */
+    public Body(Body other) {
+        shape = other.shape;
+        dynamic = other.dynamic;
+        rotatable = other.rotatable;
+        interacting = other.interacting;
+        gravityAffected = other.gravityAffected;
+        layers = other.layers;
+        userData = other.userData;
+        x = other.x;
+        y = other.y;
+        angle = other.angle;
+        c = other.c;
+        s = other.s;
+        vx = other.vx;
+        vy = other.vy;
+        w = other.w;
+    }
+
+    /**
+     * The id the world gave this body when it was added (unique within that world), or −1.
+     *
+     * @return the id
+     */
+    public int getId() {
+        return id;
+    }
+
+    /**
+     * The world this body belongs to.
+     *
+     * @return the world, or null when the body has not been added to one
+     */
+    public World getWorld() {
+        return world;
+    }
+
+    /**
+     * The body's shape.
+     *
+     * @return the shape
+     */
+    public Shape getShape() {
+        return shape;
+    }
+
+    /**
+     * Replaces the shape; contacts are recomputed on the next tick.
+     *
+     * @param shape the new shape
+     */
+    public void setShape(Shape shape) {
+        this.shape = Check.notNull("Body.setShape", "shape", shape);
+        if (world != null) {
+            world.bodyGeometryChanged(this);
+        }
+    }
+
+    /**
+     * The x position of the body's origin.
+     *
+     * @return x (px)
+     */
+    public float getX() {
+        return x;
+    }
+
+    /**
+     * The y position of the body's origin (y points down the screen).
+     *
+     * @return y (px)
+     */
+    public float getY() {
+        return y;
+    }
+
+    /**
+     * Moves the body. Velocities are kept.
+     *
+     * @param x the new x (px)
+     * @param y the new y (px)
+     */
+    public void setPosition(float x, float y) {
+        this.x = Check.finite("Body.setPosition", "x", x);
+        this.y = Check.finite("Body.setPosition", "y", y);
+        if (world != null) {
+            world.bodyGeometryChanged(this);
+        }
+    }
+
+    /**
+     * Moves the body by an offset.
+     *
+     * @param dx the x offset (px)
+     * @param dy the y offset (px)
+     */
+    public void translate(float dx, float dy) {
+        setPosition(x + Check.finite("Body.translate", "dx", dx), y + Check.finite("Body.translate", "dy", dy));
+    }
+
+    /**
+     * The body's angle, accumulated over its whole motion (not wrapped).
+     *
+     * @return the angle in radians
+     */
+    public float getAngle() {
+        return angle;
+    }
+
+    /**
+     * Cosine of the body's angle, as the engine uses it.
+     *
+     * @return cos(angle)
+     */
+    public float getCos() {
+        return c;
+    }
+
+    /**
+     * Sine of the body's angle, as the engine uses it.
+     *
+     * @return sin(angle)
+     */
+    public float getSin() {
+        return s;
+    }
+
+    /**
+     * Sets the body's angle.
+     *
+     * @param radians the angle in radians
+     */
+    public void setAngle(float radians) {
+        angle = Check.finite("Body.setAngle", "radians", radians);
+        c = EMath.cos(radians);
+        s = EMath.sin(radians);
+        if (world != null) {
+            world.bodyGeometryChanged(this);
+        }
+    }
+
+    /**
+     * Sets the body's angle in degrees (the original engine's {@code setRotationDeg}).
+     *
+     * @param degrees the angle in degrees
+     */
+    public void setAngleDegrees(float degrees) {
+        setAngle(Check.finite("Body.setAngleDegrees", "degrees", degrees) * (EMath.PI / 180f));
+    }
+
+    /**
+     * The x component of the linear velocity.
+     *
+     * @return vx (px/s)
+     */
+    public float getVelocityX() {
+        return vx;
+    }
+
+    /**
+     * The y component of the linear velocity.
+     *
+     * @return vy (px/s)
+     */
+    public float getVelocityY() {
+        return vy;
+    }
+
+    /**
+     * Sets the linear velocity. Ignored motion on a static body: static bodies keep zero velocity.
+     *
+     * @param vx the x component (px/s)
+     * @param vy the y component (px/s)
+     */
+    public void setVelocity(float vx, float vy) {
+        Check.finite("Body.setVelocity", "vx", vx);
+        Check.finite("Body.setVelocity", "vy", vy);
+        if (dynamic) {
+            this.vx = vx;
+            this.vy = vy;
+        }
+    }
+
+    /**
+     * The angular velocity; positive values grow the angle.
+     *
+     * @return ω (rad/s)
+     */
+    public float getAngularVelocity() {
+        return w;
+    }
+
+    /**
+     * Sets the angular velocity (ignored for static and non-rotatable bodies).
+     *
+     * @param omega ω (rad/s)
+     */
+    public void setAngularVelocity(float omega) {
+        Check.finite("Body.setAngularVelocity", "omega", omega);
+        if (dynamic && rotatable) {
+            w = omega;
+        }
+    }
+
+    /**
+     * The velocity of a world point moving with the body: v + ω × r.
+     *
+     * @param px the point's x (px)
+     * @param py the point's y (px)
+     * @return the x component (px/s)
+     */
+    public float getPointVelocityX(float px, float py) {
+        return vx - w * (py - y);
+    }
+
+    /**
+     * The velocity of a world point moving with the body: v + ω × r.
+     *
+     * @param px the point's x (px)
+     * @param py the point's y (px)
+     * @return the y component (px/s)
+     */
+    public float getPointVelocityY(float px, float py) {
+        return vy + w * (px - x);
+    }
+
+    /**
+     * Maps a body-local point to world x.
+     *
+     * @param lx local x (px)
+     * @param ly local y (px)
+     * @return world x (px)
+     */
+    public float toWorldX(float lx, float ly) {
+        return x + c * lx - s * ly;
+    }
+
+    /**
+     * Maps a body-local point to world y.
+     *
+     * @param lx local x (px)
+     * @param ly local y (px)
+     * @return world y (px)
+     */
+    public float toWorldY(float lx, float ly) {
+        return y + s * lx + c * ly;
+    }
+
+    /**
+     * Maps a world point to body-local x.
+     *
+     * @param wx world x (px)
+     * @param wy world y (px)
+     * @return local x (px)
+     */
+    public float toLocalX(float wx, float wy) {
+        return c * (wx - x) + s * (wy - y);
+    }
+
+    /**
+     * Maps a world point to body-local y.
+     *
+     * @param wx world x (px)
+     * @param wy world y (px)
+     * @return local y (px)
+     */
+    public float toLocalY(float wx, float wy) {
+        return -s * (wx - x) + c * (wy - y);
+    }
+
+    /**
+     * The body's mass: the shape's mass for a dynamic body, infinite for a static one.
+     *
+     * @return the mass
+     */
+    public float getMass() {
+        return dynamic ? shape.getMass() : Float.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The inverse mass the solver uses (0 for static bodies).
+     *
+     * @return 1/mass, or 0
+     */
+    public float getInverseMass() {
+        return dynamic ? shape.getInverseMass() : 0f;
+    }
+
+    /**
+     * The moment of inertia about the body's origin (infinite when static or not rotatable).
+     *
+     * @return the inertia (mass·px²)
+     */
+    public float getInertia() {
+        return dynamic && rotatable ? shape.getInertia() : Float.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The inverse inertia the solver uses (0 for static or non-rotatable bodies).
+     *
+     * @return 1/inertia, or 0
+     */
+    public float getInverseInertia() {
+        return dynamic && rotatable ? shape.getInverseInertia() : 0f;
+    }
+
+    /**
+     * Kinetic energy ½mv² + ½Iω² (0 for static bodies).
+     *
+     * @return the kinetic energy (mass·px²/s²)
+     */
+    public float getKineticEnergy() {
+        if (!dynamic) {
+            return 0f;
+        }
+        float e = 0.5f * shape.getMass() * (vx * vx + vy * vy);
+        if (rotatable) {
+            e += 0.5f * shape.getInertia() * w * w;
+        }
+        return e;
+    }
+
+    /**
+     * Whether the body moves.
+     *
+     * @return true when dynamic
+     */
+    public boolean isDynamic() {
+        return dynamic;
+    }
+
+    /**
+     * Makes the body dynamic or static. A body made static loses its velocity.
+     *
+     * @param dynamic true for dynamic
+     */
+    public void setDynamic(boolean dynamic) {
+        this.dynamic = dynamic;
+        if (!dynamic) {
+            vx = 0f;
+            vy = 0f;
+            w = 0f;
+        }
+        if (world != null) {
+            world.bodyFilterChanged(this);
+        }
+    }
+
+    /**
+     * Whether the body may rotate.
+     *
+     * @return true when rotatable (the default)
+     */
+    public boolean canRotate() {
+        return rotatable;
+    }
+
+    /**
+     * Allows or forbids rotation; a body that may not rotate has infinite inertia.
+     *
+     * @param rotatable true to allow rotation
+     */
+    public void setRotatable(boolean rotatable) {
+        this.rotatable = rotatable;
+        if (!rotatable) {
+            w = 0f;
+        }
+    }
+
+    /**
+     * Whether the body collides with other bodies.
+     *
+     * @return true when interacting (the default)
+     */
+    public boolean isInteracting() {
+        return interacting;
+    }
+
+    /**
+     * Lets the body collide with other bodies or pass through them.
+     *
+     * @param interacting true to collide
+     */
+    public void setInteracting(boolean interacting) {
+        this.interacting = interacting;
+        if (world != null) {
+            world.bodyFilterChanged(this);
+        }
+    }
+
+    /**
+     * Whether gravity acts on the body.
+     *
+     * @return true when affected by gravity (the default)
+     */
+    public boolean isAffectedByGravity() {
+        return gravityAffected;
+    }
+
+    /**
+     * Lets gravity act on the body or not.
+     *
+     * @param affected true to feel gravity
+     */
+    public void setGravityAffected(boolean affected) {
+        this.gravityAffected = affected;
+    }
+
+    /**
+     * Adds a collision layer. Two bodies that share any layer do not collide with each other
+     * (the original engine's meaning), which is how jointed bodies are kept from colliding.
+     *
+     * @param layer the layer, 0 to 31
+     */
+    public void addCollisionLayer(int layer) {
+        setCollisionLayers(layers | (1 << checkLayer("Body.addCollisionLayer", layer)));
+    }
+
+    /**
+     * Removes a collision layer.
+     *
+     * @param layer the layer, 0 to 31
+     */
+    public void removeCollisionLayer(int layer) {
+        setCollisionLayers(layers & ~(1 << checkLayer("Body.removeCollisionLayer", layer)));
+    }
+
+    /**
+     * The collision layers as a bit set (bit k set when layer k is on).
+     *
+     * @return the layer bits
+     */
+    public int getCollisionLayers() {
+        return layers;
+    }
+
+    /**
+     * Sets all collision layers at once.
+     *
+     * @param bits the layer bits
+     */
+    public void setCollisionLayers(int bits) {
+        layers = bits;
+        if (world != null) {
+            world.bodyFilterChanged(this);
+        }
+    }
+
+    private static int checkLayer(String where, int layer) {
+        if (layer < 0 || layer > 31) {
+            throw new IllegalArgumentException(where + ": layer must be in 0..31, was " + layer);
+        }
+        return layer;
+    }
+
+    /**
+     * Applies a force at the centre of mass for the next tick.
+     *
+     * @param fx x component (mass·px/s²)
+     * @param fy y component (mass·px/s²)
+     */
+    public void applyForce(float fx, float fy) {
+        forceX += Check.finite("Body.applyForce", "fx", fx);
+        forceY += Check.finite("Body.applyForce", "fy", fy);
+    }
+
+    /**
+     * Applies a force at a world point for the next tick; an off-centre force also makes a torque.
+     *
+     * @param fx x component (mass·px/s²)
+     * @param fy y component (mass·px/s²)
+     * @param px the point's x (px)
+     * @param py the point's y (px)
+     */
+    public void applyForceAt(float fx, float fy, float px, float py) {
+        applyForce(fx, fy);
+        Check.finite("Body.applyForceAt", "px", px);
+        Check.finite("Body.applyForceAt", "py", py);
+        torque += (px - x) * fy - (py - y) * fx;
+    }
+
+    /**
+     * Applies an acceleration (a force proportional to the mass) for the next tick.
+     *
+     * @param ax x component (px/s²)
+     * @param ay y component (px/s²)
+     */
+    public void applyAcceleration(float ax, float ay) {
+        Check.finite("Body.applyAcceleration", "ax", ax);
+        Check.finite("Body.applyAcceleration", "ay", ay);
+        if (dynamic) {
+            float m = shape.getMass();
+            forceX += m * ax;
+            forceY += m * ay;
+        }
+    }
+
+    /**
+     * Applies a torque for the next tick.
+     *
+     * @param t the torque (mass·px²/s²); positive grows the angle
+     */
+    public void applyTorque(float t) {
+        torque += Check.finite("Body.applyTorque", "torque", t);
+    }
+
+    /**
+     * Applies an impulse at the centre of mass now: the velocity changes at once by j/m.
+     * (The original engine calls this {@code applyMomentum}.)
+     *
+     * @param jx x component (mass·px/s)
+     * @param jy y component (mass·px/s)
+     */
+    public void applyImpulse(float jx, float jy) {
+        Check.finite("Body.applyImpulse", "jx", jx);
+        Check.finite("Body.applyImpulse", "jy", jy);
+        if (dynamic) {
+            float im = shape.getInverseMass();
+            vx += im * jx;
+            vy += im * jy;
+        }
+    }
+
+    /**
+     * Applies an impulse at a world point now, changing linear and angular velocity.
+     *
+     * @param jx x component (mass·px/s)
+     * @param jy y component (mass·px/s)
+     * @param px the point's x (px)
+     * @param py the point's y (px)
+     */
+    public void applyImpulseAt(float jx, float jy, float px, float py) {
+        Check.finite("Body.applyImpulseAt", "px", px);
+        Check.finite("Body.applyImpulseAt", "py", py);
+        applyImpulse(jx, jy);
+        if (dynamic && rotatable) {
+            w += shape.getInverseInertia() * ((px - x) * jy - (py - y) * jx);
+        }
+    }
+
+    /**
+     * Applies an angular impulse now.
+     *
+     * @param impulse the angular impulse (mass·px²/s)
+     */
+    public void applyAngularImpulse(float impulse) {
+        Check.finite("Body.applyAngularImpulse", "impulse", impulse);
+        if (dynamic && rotatable) {
+            w += shape.getInverseInertia() * impulse;
+        }
+    }
+
+    /**
+     * The number of contacts (touching or about to touch) this body had in the last tick.
+     *
+     * @return the contact count
+     */
+    public int getContactCount() {
+        return contactCount;
+    }
+
+    /**
+     * Copies the body's contacts of the last tick into an array.
+     *
+     * @param out an array of at least {@link #getContactCount()} elements
+     * @return the number of contacts written
+     */
+    public int getContacts(Contact[] out) {
+        int n = 0;
+        for (Contact k = contactList; k != null && n < out.length; k = k.next(this)) {
+            out[n++] = k;
+        }
+        return n;
+    }
+
+    /**
+     * The application's object attached to this body.
+     *
+     * @return the user data, or null
+     */
+    public Object getUserData() {
+        return userData;
+    }
+
+    /**
+     * Attaches an application object to this body.
+     *
+     * @param userData any object, or null
+     */
+    public void setUserData(Object userData) {
+        this.userData = userData;
+    }
+
+    @Override
+    public String toString() {
+        return "Body#" + id + (dynamic ? " dynamic" : " static") + " at (" + x + ", " + y + ")";
+    }
+}

@@ -1,0 +1,217 @@
+package org.emini.dynamics;
+
+/**
+ * A contact between two bodies whose bounding boxes overlap: up to two contact points with a common
+ * normal, and the impulses the solver applied at them in the last tick.
+ *
+ * <p>Contacts persist from tick to tick while the bodies stay close, so their impulses warm-start
+ * the solver. Contact objects are pooled by the world: do not keep a reference past the next tick.
+ * A contact with no points is a pair that is near but not touching.
+ */
+public final class Contact {
+    Body bodyA;
+    Body bodyB;
+    // Intrusive doubly linked lists through both bodies' contact lists.
+    Contact prevA;
+    Contact nextA;
+    Contact prevB;
+    Contact nextB;
+    int index = -1;
+    boolean filterDirty;
+
+    int pointCount;
+    float normalX;
+    float normalY;
+    final float[] pointX = new float[2];
+    final float[] pointY = new float[2];
+    final float[] separation = new float[2];
+    final int[] id = new int[2];
+    final float[] normalImpulse = new float[2];
+    final float[] tangentImpulse = new float[2];
+    final float[] maxNormalImpulse = new float[2];
+    float friction;
+    float restitution;
+
+    Contact() {
+    }
+
+    Contact next(Body b) {
+        return b == bodyA ? nextA : nextB;
+    }
+
+    /**
+     * The first body; the normal points from it to the second.
+     *
+     * @return body A
+     */
+    public Body getBodyA() {
+        return bodyA;
+    }
+
+    /**
+     * The second body.
+     *
+     * @return body B
+     */
+    public Body getBodyB() {
+        return bodyB;
+    }
+
+    /**
+     * The body on the other side of this contact.
+     *
+     * @param body one of the two bodies
+     * @return the other one
+     */
+    public Body getOther(Body body) {
+        return body == bodyA ? bodyB : bodyA;
+    }
+
+    /**
+     * Whether the shapes touch (or are about to, within the speculative distance).
+     *
+     * @return true when the contact has points
+     */
+    public boolean isTouching() {
+        return pointCount > 0;
+    }
+
+    /**
+     * The number of contact points: 0, 1 (a corner on a face: "single") or 2 (face on face).
+     *
+     * @return the point count
+     */
+    public int getPointCount() {
+        return pointCount;
+    }
+
+    /**
+     * Whether this is a single-point contact, as the original engine reports it.
+     *
+     * @return true when there is exactly one point
+     */
+    public boolean isSingle() {
+        return pointCount == 1;
+    }
+
+    /**
+     * The x component of the unit normal, pointing from body A to body B.
+     *
+     * @return normal x
+     */
+    public float getNormalX() {
+        return normalX;
+    }
+
+    /**
+     * The y component of the unit normal, pointing from body A to body B.
+     *
+     * @return normal y
+     */
+    public float getNormalY() {
+        return normalY;
+    }
+
+    /**
+     * The x position of a contact point (midway between the surfaces).
+     *
+     * @param i the point, 0 or 1
+     * @return x (px)
+     */
+    public float getPointX(int i) {
+        return pointX[checkPoint(i)];
+    }
+
+    /**
+     * The y position of a contact point (midway between the surfaces).
+     *
+     * @param i the point, 0 or 1
+     * @return y (px)
+     */
+    public float getPointY(int i) {
+        return pointY[checkPoint(i)];
+    }
+
+    /**
+     * The separation at a contact point when it was detected: negative when the shapes overlap.
+     *
+     * @param i the point, 0 or 1
+     * @return the separation (px)
+     */
+    public float getSeparation(int i) {
+        return separation[checkPoint(i)];
+    }
+
+    /**
+     * The overlap at a contact point when it was detected (the opposite of the separation, never
+     * below 0).
+     *
+     * @param i the point, 0 or 1
+     * @return the depth (px)
+     */
+    public float getDepth(int i) {
+        float d = -separation[checkPoint(i)];
+        return d > 0f ? d : 0f;
+    }
+
+    /**
+     * The normal impulse the solver applied at a point in the last substep (warm-start value).
+     *
+     * @param i the point, 0 or 1
+     * @return the impulse (mass·px/s)
+     */
+    public float getNormalImpulse(int i) {
+        return normalImpulse[checkPoint(i)];
+    }
+
+    /**
+     * The friction impulse the solver applied at a point in the last substep.
+     *
+     * @param i the point, 0 or 1
+     * @return the impulse (mass·px/s)
+     */
+    public float getTangentImpulse(int i) {
+        return tangentImpulse[checkPoint(i)];
+    }
+
+    /**
+     * The largest normal impulse applied at a point during the last tick, summed over one substep;
+     * a measure of how hard the bodies hit.
+     *
+     * @param i the point, 0 or 1
+     * @return the impulse (mass·px/s)
+     */
+    public float getMaxNormalImpulse(int i) {
+        return maxNormalImpulse[checkPoint(i)];
+    }
+
+    /**
+     * The friction coefficient of this contact: the product of the two shapes' friction factors.
+     *
+     * @return the friction coefficient
+     */
+    public float getFriction() {
+        return friction;
+    }
+
+    /**
+     * The elasticity of this contact: the product of the two shapes' elasticities.
+     *
+     * @return the restitution coefficient
+     */
+    public float getElasticity() {
+        return restitution;
+    }
+
+    private int checkPoint(int i) {
+        if (i < 0 || i >= pointCount) {
+            throw new IndexOutOfBoundsException("Contact point " + i + " of " + pointCount);
+        }
+        return i;
+    }
+
+    @Override
+    public String toString() {
+        return "Contact(" + bodyA + ", " + bodyB + ", " + pointCount + " points)";
+    }
+}

@@ -1,0 +1,569 @@
+package org.emini.dynamics;
+
+import static org.emini.dynamics.SolverBodies.DPX;
+import static org.emini.dynamics.SolverBodies.DPY;
+import static org.emini.dynamics.SolverBodies.DQC;
+import static org.emini.dynamics.SolverBodies.DQS;
+import static org.emini.dynamics.SolverBodies.II;
+import static org.emini.dynamics.SolverBodies.IM;
+import static org.emini.dynamics.SolverBodies.STRIDE;
+import static org.emini.dynamics.SolverBodies.VX;
+import static org.emini.dynamics.SolverBodies.VY;
+import static org.emini.dynamics.SolverBodies.W;
+
+/**
+ * Soft-step contact constraints: the design of Box2D v3 (Catto's "solver2d" study), on flat arrays.
+ *
+ * <p>Per substep: warm start, one biased solve with soft (spring-damper) contacts, position
+ * integration, one unbiased relax pass. Contacts are not re-collided per substep; their separation is
+ * updated from the bodies' motion since the tick started. After the substeps a restitution pass
+ * restores the bounce. The relax pass removes the velocity the push-out created, so overlap is
+ * resolved without adding energy.
+ *
+ * <p>Layout: each constraint is {@link #CS} floats (shared data then two point blocks of
+ * {@link #PS} floats) plus {@link #CI} ints; a constraint's whole state sits in one or two cache
+ * lines.
+ */
+final class ContactSolver {
+    // Per-constraint floats.
+    private static final int NX = 0;
+    private static final int NY = 1;
+    private static final int FRICTION = 2;
+    private static final int RESTITUTION = 3;
+    private static final int BIAS_RATE = 4;
+    private static final int MASS_SCALE = 5;
+    private static final int IMPULSE_SCALE = 6;
+    // Inverse of the 2×2 normal mass matrix of a two-point manifold; BLOCK is 1 when well conditioned.
+    private static final int BLOCK = 7;
+    private static final int K11 = 8;
+    private static final int K12 = 9;
+    private static final int K22 = 10;
+    private static final int P0 = 12;
+    // Per-point floats, relative to the point block.
+    private static final int RAX = 0;
+    private static final int RAY = 1;
+    private static final int RBX = 2;
+    private static final int RBY = 3;
+    private static final int BASE_SEP = 4;
+    private static final int NMASS = 5;
+    private static final int TMASS = 6;
+    private static final int NIMP = 7;
+    private static final int TIMP = 8;
+    private static final int MAXIMP = 9;
+    private static final int RELVEL = 10;
+    private static final int PS = 12;
+    static final int CS = P0 + 2 * PS;
+    // Per-constraint ints.
+    private static final int BODY_A = 0;
+    private static final int BODY_B = 1;
+    private static final int POINTS = 2;
+    static final int CI = 3;
+
+    private float[] f = new float[16 * CS];
+    private int[] n = new int[16 * CI];
+    private Contact[] contacts = new Contact[16];
+    private int count;
+
+    /** Largest velocity change a relax pass made (px/s); the dynamic-iteration convergence test. */
+    float lastRelaxChange;
+
+    int count() {
+        return count;
+    }
+
+    /**
+     * Builds the constraints of all touching contacts from the poses at the start of the tick.
+     * Softness is set per constraint: contacts with a static body use the stiffer setting.
+     */
+    void prepare(Contact[] all, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft) {
+        ensure(contactCount);
+        float[] st = bodies.state;
+        int k = 0;
+        for (int ci = 0; ci < contactCount; ci++) {
+            Contact c = all[ci];
+            if (c.pointCount == 0) {
+                continue;
+            }
+            int ia = c.bodyA.solverIndex;
+            int ib = c.bodyB.solverIndex;
+            if (ia == 0 && ib == 0) {
+                continue;
+            }
+            contacts[k] = c;
+            int fo = k * CS;
+            int io = k * CI;
+            n[io + BODY_A] = ia;
+            n[io + BODY_B] = ib;
+            n[io + POINTS] = c.pointCount;
+            float nx = c.normalX;
+            float ny = c.normalY;
+            f[fo + NX] = nx;
+            f[fo + NY] = ny;
+            f[fo + FRICTION] = c.friction;
+            f[fo + RESTITUTION] = c.restitution;
+            Softness sf = (ia == 0 || ib == 0) ? staticSoft : soft;
+            f[fo + BIAS_RATE] = sf.biasRate;
+            f[fo + MASS_SCALE] = sf.massScale;
+            f[fo + IMPULSE_SCALE] = sf.impulseScale;
+            int oa = ia * STRIDE;
+            int ob = ib * STRIDE;
+            float mA = st[oa + IM];
+            float iA = st[oa + II];
+            float mB = st[ob + IM];
+            float iB = st[ob + II];
+            float vax = st[oa + VX];
+            float vay = st[oa + VY];
+            float wa = st[oa + W];
+            float vbx = st[ob + VX];
+            float vby = st[ob + VY];
+            float wb = st[ob + W];
+            Body a = c.bodyA;
+            Body b = c.bodyB;
+            for (int p = 0; p < c.pointCount; p++) {
+                int po = fo + P0 + p * PS;
+                float rax = c.pointX[p] - a.x;
+                float ray = c.pointY[p] - a.y;
+                float rbx = c.pointX[p] - b.x;
+                float rby = c.pointY[p] - b.y;
+                f[po + RAX] = rax;
+                f[po + RAY] = ray;
+                f[po + RBX] = rbx;
+                f[po + RBY] = rby;
+                f[po + BASE_SEP] = c.separation[p] - ((rbx - rax) * nx + (rby - ray) * ny);
+                float rna = rax * ny - ray * nx;
+                float rnb = rbx * ny - rby * nx;
+                float kn = mA + mB + iA * rna * rna + iB * rnb * rnb;
+                f[po + NMASS] = kn > 0f ? 1f / kn : 0f;
+                // Tangent t = (−ny, nx).
+                float rta = rax * nx + ray * ny;
+                float rtb = rbx * nx + rby * ny;
+                float kt = mA + mB + iA * rta * rta + iB * rtb * rtb;
+                f[po + TMASS] = kt > 0f ? 1f / kt : 0f;
+                f[po + NIMP] = c.normalImpulse[p];
+                f[po + TIMP] = c.tangentImpulse[p];
+                f[po + MAXIMP] = 0f;
+                float dvx = vbx - wb * rby - vax + wa * ray;
+                float dvy = vby + wb * rbx - vay - wa * rax;
+                f[po + RELVEL] = dvx * nx + dvy * ny;
+            }
+            f[fo + BLOCK] = 0f;
+            if (c.pointCount == 2) {
+                prepareBlock(fo, mA, iA, mB, iB, nx, ny);
+            }
+            k++;
+        }
+        count = k;
+    }
+
+    /**
+     * Prepares the joint solve of both normal constraints of a face contact. Solving the two points
+     * one after the other favours the first: a tower of boxes then creeps sideways and topples.
+     * Solved together the result is exact and symmetric.
+     */
+    private void prepareBlock(int fo, float mA, float iA, float mB, float iB, float nx, float ny) {
+        int p1 = fo + P0;
+        int p2 = p1 + PS;
+        float rn1a = f[p1 + RAX] * ny - f[p1 + RAY] * nx;
+        float rn1b = f[p1 + RBX] * ny - f[p1 + RBY] * nx;
+        float rn2a = f[p2 + RAX] * ny - f[p2 + RAY] * nx;
+        float rn2b = f[p2 + RBX] * ny - f[p2 + RBY] * nx;
+        float k11 = mA + mB + iA * rn1a * rn1a + iB * rn1b * rn1b;
+        float k22 = mA + mB + iA * rn2a * rn2a + iB * rn2b * rn2b;
+        float k12 = mA + mB + iA * rn1a * rn2a + iB * rn1b * rn2b;
+        float det = k11 * k22 - k12 * k12;
+        // Nearly coincident points make the matrix ill-conditioned: solve those point by point.
+        if (k11 * k11 < 1000f * det) {
+            float inv = 1f / det;
+            f[fo + BLOCK] = 1f;
+            f[fo + K11] = k22 * inv;
+            f[fo + K12] = -k12 * inv;
+            f[fo + K22] = k11 * inv;
+        }
+    }
+
+    /** Replaces the softness of every constraint (when the substep length changes). */
+    void resoften(Softness soft, Softness staticSoft) {
+        for (int k = 0; k < count; k++) {
+            int fo = k * CS;
+            int io = k * CI;
+            Softness sf = (n[io + BODY_A] == 0 || n[io + BODY_B] == 0) ? staticSoft : soft;
+            f[fo + BIAS_RATE] = sf.biasRate;
+            f[fo + MASS_SCALE] = sf.massScale;
+            f[fo + IMPULSE_SCALE] = sf.impulseScale;
+        }
+    }
+
+    /** Scales the stored impulses, when the substep length changes (dynamic iterations). */
+    void scaleImpulses(float factor) {
+        for (int k = 0; k < count; k++) {
+            int fo = k * CS;
+            int pc = n[k * CI + POINTS];
+            for (int p = 0; p < pc; p++) {
+                int po = fo + P0 + p * PS;
+                f[po + NIMP] *= factor;
+                f[po + TIMP] *= factor;
+            }
+        }
+    }
+
+    /** Re-applies the accumulated impulses, so a resting stack starts each substep nearly solved. */
+    void warmStart(SolverBodies bodies) {
+        float[] st = bodies.state;
+        for (int k = 0; k < count; k++) {
+            int fo = k * CS;
+            int io = k * CI;
+            int oa = n[io + BODY_A] * STRIDE;
+            int ob = n[io + BODY_B] * STRIDE;
+            float nx = f[fo + NX];
+            float ny = f[fo + NY];
+            float mA = st[oa + IM];
+            float iA = st[oa + II];
+            float mB = st[ob + IM];
+            float iB = st[ob + II];
+            float vax = st[oa + VX];
+            float vay = st[oa + VY];
+            float wa = st[oa + W];
+            float vbx = st[ob + VX];
+            float vby = st[ob + VY];
+            float wb = st[ob + W];
+            int pc = n[io + POINTS];
+            for (int p = 0; p < pc; p++) {
+                int po = fo + P0 + p * PS;
+                float ni = f[po + NIMP];
+                float ti = f[po + TIMP];
+                if (ni == 0f && f[po + MAXIMP] == 0f) {
+                    // Not touched yet this tick: remember the approach speed just before impact,
+                    // which gravity has raised since the tick began, for the restitution pass.
+                    float rax = f[po + RAX];
+                    float ray = f[po + RAY];
+                    float rbx = f[po + RBX];
+                    float rby = f[po + RBY];
+                    f[po + RELVEL] = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
+                    continue;
+                }
+                float px = ni * nx - ti * ny;
+                float py = ni * ny + ti * nx;
+                vax -= mA * px;
+                vay -= mA * py;
+                wa -= iA * (f[po + RAX] * py - f[po + RAY] * px);
+                vbx += mB * px;
+                vby += mB * py;
+                wb += iB * (f[po + RBX] * py - f[po + RBY] * px);
+            }
+            if (oa != 0) {
+                st[oa + VX] = vax;
+                st[oa + VY] = vay;
+                st[oa + W] = wa;
+            }
+            if (ob != 0) {
+                st[ob + VX] = vbx;
+                st[ob + VY] = vby;
+                st[ob + W] = wb;
+            }
+        }
+    }
+
+    /**
+     * One Gauss–Seidel pass over all contacts.
+     *
+     * @param useBias true for the soft, position-correcting solve; false for the rigid relax pass
+     * @param invH 1 / substep length
+     * @param maxPush cap on the push-out speed (px/s)
+     * @param slop penetration left alone so resting contacts do not jitter (px)
+     */
+    void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop) {
+        float[] st = bodies.state;
+        float maxChange = 0f;
+        for (int k = 0; k < count; k++) {
+            int fo = k * CS;
+            int io = k * CI;
+            int oa = n[io + BODY_A] * STRIDE;
+            int ob = n[io + BODY_B] * STRIDE;
+            float nx = f[fo + NX];
+            float ny = f[fo + NY];
+            float mA = st[oa + IM];
+            float iA = st[oa + II];
+            float mB = st[ob + IM];
+            float iB = st[ob + II];
+            float vax = st[oa + VX];
+            float vay = st[oa + VY];
+            float wa = st[oa + W];
+            float vbx = st[ob + VX];
+            float vby = st[ob + VY];
+            float wb = st[ob + W];
+            // Motion of the two bodies since the tick started.
+            float dpx = st[ob + DPX] - st[oa + DPX];
+            float dpy = st[ob + DPY] - st[oa + DPY];
+            float qac = st[oa + DQC];
+            float qas = st[oa + DQS];
+            float qbc = st[ob + DQC];
+            float qbs = st[ob + DQS];
+            float biasRate = f[fo + BIAS_RATE];
+            float softMass = f[fo + MASS_SCALE];
+            float softImpulse = f[fo + IMPULSE_SCALE];
+            int pc = n[io + POINTS];
+            float friction = f[fo + FRICTION];
+
+            boolean solved = false;
+            if (f[fo + BLOCK] != 0f) {
+                int p1 = fo + P0;
+                int p2 = p1 + PS;
+                float r1ax = f[p1 + RAX];
+                float r1ay = f[p1 + RAY];
+                float r1bx = f[p1 + RBX];
+                float r1by = f[p1 + RBY];
+                float r2ax = f[p2 + RAX];
+                float r2ay = f[p2 + RAY];
+                float r2bx = f[p2 + RBX];
+                float r2by = f[p2 + RBY];
+                float s1 = (dpx + qbc * r1bx - qbs * r1by - qac * r1ax + qas * r1ay) * nx
+                    + (dpy + qbs * r1bx + qbc * r1by - qas * r1ax - qac * r1ay) * ny + f[p1 + BASE_SEP];
+                float s2 = (dpx + qbc * r2bx - qbs * r2by - qac * r2ax + qas * r2ay) * nx
+                    + (dpy + qbs * r2bx + qbc * r2by - qas * r2ax - qac * r2ay) * ny + f[p2 + BASE_SEP];
+                // Both points touching: solve them together. A speculative point goes point by point.
+                if (s1 <= 0f && s2 <= 0f) {
+                    float ms = useBias ? softMass : 1f;
+                    float is = useBias ? softImpulse : 0f;
+                    float b1 = 0f;
+                    float b2 = 0f;
+                    if (useBias) {
+                        b1 = pushBias(s1 + slop, biasRate, maxPush);
+                        b2 = pushBias(s2 + slop, biasRate, maxPush);
+                    }
+                    float e1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny + b1;
+                    float e2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny + b2;
+                    float a1 = f[p1 + NIMP];
+                    float a2 = f[p2 + NIMP];
+                    float x1 = a1 - ms * (f[fo + K11] * e1 + f[fo + K12] * e2) - is * a1;
+                    float x2 = a2 - ms * (f[fo + K12] * e1 + f[fo + K22] * e2) - is * a2;
+                    // Both impulses pushing: accept. Otherwise one point separates; the sequential
+                    // solve below handles that case.
+                    if (x1 >= 0f && x2 >= 0f) {
+                        solved = true;
+                        float d1 = x1 - a1;
+                        float d2 = x2 - a2;
+                        f[p1 + NIMP] = x1;
+                        f[p2 + NIMP] = x2;
+                        if (d1 > f[p1 + MAXIMP]) {
+                            f[p1 + MAXIMP] = d1;
+                        }
+                        if (d2 > f[p2 + MAXIMP]) {
+                            f[p2 + MAXIMP] = d2;
+                        }
+                        float dv1 = (d1 < 0f ? -d1 : d1) / f[p1 + NMASS];
+                        float dv2 = (d2 < 0f ? -d2 : d2) / f[p2 + NMASS];
+                        maxChange = Math.max(maxChange, Math.max(dv1, dv2));
+                        float px = (d1 + d2) * nx;
+                        float py = (d1 + d2) * ny;
+                        vax -= mA * px;
+                        vay -= mA * py;
+                        wa -= iA * ((r1ax * ny - r1ay * nx) * d1 + (r2ax * ny - r2ay * nx) * d2);
+                        vbx += mB * px;
+                        vby += mB * py;
+                        wb += iB * ((r1bx * ny - r1by * nx) * d1 + (r2bx * ny - r2by * nx) * d2);
+                    }
+                }
+            }
+            for (int p = 0; p < pc && !solved; p++) {
+                int po = fo + P0 + p * PS;
+                float rax = f[po + RAX];
+                float ray = f[po + RAY];
+                float rbx = f[po + RBX];
+                float rby = f[po + RBY];
+                // Current separation from the anchors carried along by each body's rotation.
+                float prax = qac * rax - qas * ray;
+                float pray = qas * rax + qac * ray;
+                float prbx = qbc * rbx - qbs * rby;
+                float prby = qbs * rbx + qbc * rby;
+                float sep = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + f[po + BASE_SEP];
+                float bias = 0f;
+                float massScale = 1f;
+                float impulseScale = 0f;
+                if (sep > 0f) {
+                    // Speculative: allow closing exactly the gap this substep.
+                    bias = sep * invH;
+                } else if (useBias) {
+                    bias = pushBias(sep + slop, biasRate, maxPush);
+                    massScale = softMass;
+                    impulseScale = softImpulse;
+                }
+                float dvx = vbx - wb * rby - vax + wa * ray;
+                float dvy = vby + wb * rbx - vay - wa * rax;
+                float vn = dvx * nx + dvy * ny;
+                float old = f[po + NIMP];
+                float nm = f[po + NMASS];
+                float acc = old - nm * massScale * (vn + bias) - impulseScale * old;
+                if (acc < 0f) {
+                    acc = 0f;
+                }
+                f[po + NIMP] = acc;
+                float d = acc - old;
+                if (d > f[po + MAXIMP]) {
+                    f[po + MAXIMP] = d;
+                }
+                if (nm > 0f) {
+                    float dv = d / nm;
+                    dv = dv < 0f ? -dv : dv;
+                    if (dv > maxChange) {
+                        maxChange = dv;
+                    }
+                }
+                float px = d * nx;
+                float py = d * ny;
+                vax -= mA * px;
+                vay -= mA * py;
+                wa -= iA * (rax * py - ray * px);
+                vbx += mB * px;
+                vby += mB * py;
+                wb += iB * (rbx * py - rby * px);
+            }
+
+            // Friction, bounded by the normal impulse of this pass (Coulomb cone).
+            for (int p = 0; p < pc; p++) {
+                int po = fo + P0 + p * PS;
+                float rax = f[po + RAX];
+                float ray = f[po + RAY];
+                float rbx = f[po + RBX];
+                float rby = f[po + RBY];
+                float dvx = vbx - wb * rby - vax + wa * ray;
+                float dvy = vby + wb * rbx - vay - wa * rax;
+                float vt = -dvx * ny + dvy * nx;
+                float old = f[po + TIMP];
+                float maxF = friction * f[po + NIMP];
+                float acc = old - f[po + TMASS] * vt;
+                acc = acc < -maxF ? -maxF : (acc > maxF ? maxF : acc);
+                f[po + TIMP] = acc;
+                float d = acc - old;
+                float px = -d * ny;
+                float py = d * nx;
+                vax -= mA * px;
+                vay -= mA * py;
+                wa -= iA * (rax * py - ray * px);
+                vbx += mB * px;
+                vby += mB * py;
+                wb += iB * (rbx * py - rby * px);
+            }
+
+            if (oa != 0) {
+                st[oa + VX] = vax;
+                st[oa + VY] = vay;
+                st[oa + W] = wa;
+            }
+            if (ob != 0) {
+                st[ob + VX] = vbx;
+                st[ob + VY] = vby;
+                st[ob + W] = wb;
+            }
+        }
+        if (!useBias) {
+            lastRelaxChange = maxChange;
+        }
+    }
+
+    /** Push-out velocity for a penetration beyond the slop (negative), capped at maxPush. */
+    private static float pushBias(float depthBeyondSlop, float biasRate, float maxPush) {
+        if (depthBeyondSlop >= 0f) {
+            return 0f;
+        }
+        float bias = biasRate * depthBeyondSlop;
+        return bias < -maxPush ? -maxPush : bias;
+    }
+
+    /**
+     * Restores the bounce: points that approached faster than the threshold and took an impulse get
+     * a separating speed of e times their approach speed.
+     */
+    void applyRestitution(SolverBodies bodies, float threshold) {
+        float[] st = bodies.state;
+        for (int k = 0; k < count; k++) {
+            int fo = k * CS;
+            float e = f[fo + RESTITUTION];
+            if (e == 0f) {
+                continue;
+            }
+            int io = k * CI;
+            int oa = n[io + BODY_A] * STRIDE;
+            int ob = n[io + BODY_B] * STRIDE;
+            float nx = f[fo + NX];
+            float ny = f[fo + NY];
+            float mA = st[oa + IM];
+            float iA = st[oa + II];
+            float mB = st[ob + IM];
+            float iB = st[ob + II];
+            float vax = st[oa + VX];
+            float vay = st[oa + VY];
+            float wa = st[oa + W];
+            float vbx = st[ob + VX];
+            float vby = st[ob + VY];
+            float wb = st[ob + W];
+            int pc = n[io + POINTS];
+            for (int p = 0; p < pc; p++) {
+                int po = fo + P0 + p * PS;
+                float rel = f[po + RELVEL];
+                if (rel > -threshold || f[po + MAXIMP] == 0f) {
+                    continue;
+                }
+                float rax = f[po + RAX];
+                float ray = f[po + RAY];
+                float rbx = f[po + RBX];
+                float rby = f[po + RBY];
+                float dvx = vbx - wb * rby - vax + wa * ray;
+                float dvy = vby + wb * rbx - vay - wa * rax;
+                float vn = dvx * nx + dvy * ny;
+                float old = f[po + NIMP];
+                float acc = old - f[po + NMASS] * (vn + e * rel);
+                if (acc < 0f) {
+                    acc = 0f;
+                }
+                f[po + NIMP] = acc;
+                float d = acc - old;
+                if (d > f[po + MAXIMP]) {
+                    f[po + MAXIMP] = d;
+                }
+                float px = d * nx;
+                float py = d * ny;
+                vax -= mA * px;
+                vay -= mA * py;
+                wa -= iA * (rax * py - ray * px);
+                vbx += mB * px;
+                vby += mB * py;
+                wb += iB * (rbx * py - rby * px);
+            }
+            if (oa != 0) {
+                st[oa + VX] = vax;
+                st[oa + VY] = vay;
+                st[oa + W] = wa;
+            }
+            if (ob != 0) {
+                st[ob + VX] = vbx;
+                st[ob + VY] = vby;
+                st[ob + W] = wb;
+            }
+        }
+    }
+
+    /** Copies the impulses back to the persistent contacts for warm starting and queries. */
+    void storeImpulses() {
+        for (int k = 0; k < count; k++) {
+            Contact c = contacts[k];
+            int fo = k * CS;
+            int pc = n[k * CI + POINTS];
+            for (int p = 0; p < pc; p++) {
+                int po = fo + P0 + p * PS;
+                c.normalImpulse[p] = f[po + NIMP];
+                c.tangentImpulse[p] = f[po + TIMP];
+                c.maxNormalImpulse[p] = f[po + MAXIMP];
+            }
+            contacts[k] = null;
+        }
+    }
+
+    private void ensure(int capacity) {
+        if (contacts.length < capacity) {
+            int c = Math.max(capacity, contacts.length * 2);
+            contacts = new Contact[c];
+            f = new float[c * CS];
+            n = new int[c * CI];
+        }
+    }
+}

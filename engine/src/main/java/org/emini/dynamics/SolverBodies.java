@@ -1,0 +1,171 @@
+package org.emini.dynamics;
+
+import org.emini.math.EMath;
+
+/**
+ * The solver's flat copy of the moving bodies' state for one tick.
+ *
+ * <p>Each body occupies {@link #STRIDE} consecutive floats so a contact touches two short runs of
+ * memory. Slot 0 is the shared "static" slot: zero velocity and inverse mass, identity motion; every
+ * static or frozen body maps to it, which keeps the solver loops free of branches.
+ */
+final class SolverBodies {
+    static final int STRIDE = 16;
+    // Velocity state and inverse mass: what the constraint loops read and write.
+    static final int VX = 0;
+    static final int VY = 1;
+    static final int W = 2;
+    static final int IM = 3;
+    static final int II = 4;
+    // Motion since the start of the tick, used to update contact separations without re-colliding.
+    static final int DPX = 5;
+    static final int DPY = 6;
+    static final int DQC = 7;
+    static final int DQS = 8;
+    // Pose, written back to the body at the end of the tick.
+    static final int X = 9;
+    static final int Y = 10;
+    static final int C = 11;
+    static final int S = 12;
+    static final int ANGLE = 13;
+    // Constant acceleration over the tick: gravity plus applied force and torque.
+    static final int AX = 14;
+    static final int AY = 15;
+
+    // Angular acceleration kept apart: it is the only per-body value the stride has no room for.
+    float[] alpha = new float[8];
+    float[] state = new float[8 * STRIDE];
+    Body[] bodies = new Body[8];
+    int count;
+
+    /** Starts a tick: only the static slot remains. */
+    void reset(int capacity) {
+        int need = capacity + 1;
+        if (bodies.length < need) {
+            int n = Math.max(need, bodies.length * 2);
+            bodies = new Body[n];
+            state = new float[n * STRIDE];
+            alpha = new float[n];
+        }
+        float[] st = state;
+        for (int k = 0; k < STRIDE; k++) {
+            st[k] = 0f;
+        }
+        st[DQC] = 1f;
+        st[C] = 1f;
+        alpha[0] = 0f;
+        bodies[0] = null;
+        count = 1;
+    }
+
+    /** Copies a dynamic body in; returns its slot. */
+    int add(Body b, float gravityX, float gravityY) {
+        int slot = count++;
+        bodies[slot] = b;
+        float[] st = state;
+        int o = slot * STRIDE;
+        float im = b.getInverseMass();
+        float ii = b.getInverseInertia();
+        st[o + VX] = b.vx;
+        st[o + VY] = b.vy;
+        st[o + W] = b.w;
+        st[o + IM] = im;
+        st[o + II] = ii;
+        st[o + DPX] = 0f;
+        st[o + DPY] = 0f;
+        st[o + DQC] = 1f;
+        st[o + DQS] = 0f;
+        st[o + X] = b.x;
+        st[o + Y] = b.y;
+        st[o + C] = b.c;
+        st[o + S] = b.s;
+        st[o + ANGLE] = b.angle;
+        float g = b.isAffectedByGravity() ? 1f : 0f;
+        st[o + AX] = g * gravityX + im * b.forceX;
+        st[o + AY] = g * gravityY + im * b.forceY;
+        alpha[slot] = ii * b.torque;
+        return slot;
+    }
+
+    /** v ← v + h·a for every moving body (symplectic Euler, first half). */
+    void integrateVelocities(float h) {
+        float[] st = state;
+        float[] al = alpha;
+        for (int i = 1, o = STRIDE; i < count; i++, o += STRIDE) {
+            st[o + VX] += h * st[o + AX];
+            st[o + VY] += h * st[o + AY];
+            st[o + W] += h * al[i];
+        }
+    }
+
+    /** x ← x + h·v and q ← q·rot(h·ω) for every moving body (symplectic Euler, second half). */
+    void integratePositions(float h) {
+        float[] st = state;
+        for (int o = STRIDE, end = count * STRIDE; o < end; o += STRIDE) {
+            float dx = h * st[o + VX];
+            float dy = h * st[o + VY];
+            st[o + X] += dx;
+            st[o + Y] += dy;
+            st[o + DPX] += dx;
+            st[o + DPY] += dy;
+            float theta = h * st[o + W];
+            if (theta == 0f) {
+                continue;
+            }
+            st[o + ANGLE] += theta;
+            // Rotation by theta: fifth-order Taylor series for the usual small steps, exact beyond.
+            float rc;
+            float rs;
+            float t2 = theta * theta;
+            if (t2 < 0.25f) {
+                rc = 1f - 0.5f * t2 * (1f - t2 * (1f / 12f));
+                rs = theta * (1f - t2 * (1f / 6f) * (1f - t2 * (1f / 20f)));
+            } else {
+                rc = EMath.cos(theta);
+                rs = EMath.sin(theta);
+            }
+            float c = st[o + C];
+            float s = st[o + S];
+            float nc = c * rc - s * rs;
+            float ns = s * rc + c * rs;
+            float inv = 1f / EMath.sqrt(nc * nc + ns * ns);
+            st[o + C] = nc * inv;
+            st[o + S] = ns * inv;
+            c = st[o + DQC];
+            s = st[o + DQS];
+            nc = c * rc - s * rs;
+            ns = s * rc + c * rs;
+            inv = 1f / EMath.sqrt(nc * nc + ns * ns);
+            st[o + DQC] = nc * inv;
+            st[o + DQS] = ns * inv;
+        }
+    }
+
+    /**
+     * Copies the state back to the bodies, applies the world's per-tick damping and clears the
+     * forces. Returns the first body that became non-finite, or null.
+     */
+    Body writeBack(float linearKeep, float angularKeep) {
+        float[] st = state;
+        Body bad = null;
+        for (int i = 1, o = STRIDE; i < count; i++, o += STRIDE) {
+            Body b = bodies[i];
+            b.x = st[o + X];
+            b.y = st[o + Y];
+            b.c = st[o + C];
+            b.s = st[o + S];
+            b.angle = st[o + ANGLE];
+            b.vx = st[o + VX] * linearKeep;
+            b.vy = st[o + VY] * linearKeep;
+            b.w = st[o + W] * angularKeep;
+            b.forceX = 0f;
+            b.forceY = 0f;
+            b.torque = 0f;
+            if (bad == null && !(EMath.isFinite(b.x + b.y + b.vx + b.vy + b.w + b.c + b.s))) {
+                bad = b;
+            }
+            bodies[i] = null;
+        }
+        return bad;
+    }
+}

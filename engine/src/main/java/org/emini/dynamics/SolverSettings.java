@@ -1,0 +1,177 @@
+package org.emini.dynamics;
+
+/**
+ * Tuning of the contact solver and collision margins. Every value has a unit and a stated origin.
+ *
+ * <p>Lengths are in pixels. The defaults assume bodies of roughly 10 to 100 px, as in the original
+ * engine's worlds (its boxes are usually 20 px); the Box2D v3 defaults they derive from are given in
+ * metres, converted at 20 px per metre.
+ */
+public final class SolverSettings {
+    private float linearSlop = 0.05f;
+    private float speculativeDistance = 0.5f;
+    private float aabbMargin = 2f;
+    private float contactHertz = 240f;
+    private float contactDampingRatio = 10f;
+    private float contactPushMaxVelocity = 60f;
+    private float restitutionThreshold = 10f;
+    private float convergenceTolerance = 0.05f;
+
+    /** Creates the default settings. */
+    public SolverSettings() {
+    }
+
+    /**
+     * Overlap the solver leaves alone so resting contacts do not jitter. Default 0.05 px (the
+     * original engine allowed 1/16 px; Box2D v3 0.005 m).
+     *
+     * @return the slop (px)
+     */
+    public float getLinearSlop() {
+        return linearSlop;
+    }
+
+    /**
+     * Sets the slop.
+     *
+     * @param px the slop (px), ≥ 0
+     */
+    public void setLinearSlop(float px) {
+        linearSlop = Check.nonNegative("SolverSettings.setLinearSlop", "px", px);
+    }
+
+    /**
+     * Gap below which contact points are created before the shapes touch, on top of the distance
+     * the bodies can close in one tick. Default 0.5 px.
+     *
+     * @return the distance (px)
+     */
+    public float getSpeculativeDistance() {
+        return speculativeDistance;
+    }
+
+    /**
+     * Sets the speculative distance.
+     *
+     * @param px the distance (px), ≥ 0
+     */
+    public void setSpeculativeDistance(float px) {
+        speculativeDistance = Check.nonNegative("SolverSettings.setSpeculativeDistance", "px", px);
+    }
+
+    /**
+     * How much the broadphase's boxes exceed the shapes, so slowly moving bodies do not touch the
+     * tree every tick. Default 2 px (Box2D: 0.1 m).
+     *
+     * @return the margin (px)
+     */
+    public float getAabbMargin() {
+        return aabbMargin;
+    }
+
+    /**
+     * Sets the broadphase margin; takes effect for bodies added afterwards and when boxes move.
+     *
+     * @param px the margin (px), ≥ 0
+     */
+    public void setAabbMargin(float px) {
+        aabbMargin = Check.nonNegative("SolverSettings.setAabbMargin", "px", px);
+    }
+
+    /**
+     * Stiffness of contacts as a natural frequency. It is capped at a quarter of the substep rate
+     * (beyond that the soft contact loses its stability margin), and contacts with static bodies use
+     * twice the value. Default 240 Hz, so the cap decides: 50 Hz at 20 ticks per second and 10
+     * iterations, 150 Hz at 60 and 10. Box2D v3 uses 30 Hz; we measured that stiffer contacts are
+     * what keeps tall stacks from buckling (a soft contact is a spring, and a tower on springs
+     * topples once its weight times its height exceeds their rotational stiffness).
+     *
+     * @return the contact frequency (Hz)
+     */
+    public float getContactHertz() {
+        return contactHertz;
+    }
+
+    /**
+     * Sets the contact stiffness.
+     *
+     * @param hertz the frequency (Hz), &gt; 0
+     */
+    public void setContactHertz(float hertz) {
+        contactHertz = Check.positive("SolverSettings.setContactHertz", "hertz", hertz);
+    }
+
+    /**
+     * Damping ratio of contacts; large values push overlap out without bounce. Default 10 (Box2D v3).
+     *
+     * @return the damping ratio
+     */
+    public float getContactDampingRatio() {
+        return contactDampingRatio;
+    }
+
+    /**
+     * Sets the contact damping ratio.
+     *
+     * @param ratio the ratio, ≥ 0
+     */
+    public void setContactDampingRatio(float ratio) {
+        contactDampingRatio = Check.nonNegative("SolverSettings.setContactDampingRatio", "ratio", ratio);
+    }
+
+    /**
+     * Largest speed at which overlapping bodies are pushed apart. Default 60 px/s (Box2D v3: 3 m/s).
+     *
+     * @return the speed (px/s)
+     */
+    public float getContactPushMaxVelocity() {
+        return contactPushMaxVelocity;
+    }
+
+    /**
+     * Sets the push-out speed cap.
+     *
+     * @param pxPerSecond the speed (px/s), &gt; 0
+     */
+    public void setContactPushMaxVelocity(float pxPerSecond) {
+        contactPushMaxVelocity = Check.positive("SolverSettings.setContactPushMaxVelocity", "pxPerSecond", pxPerSecond);
+    }
+
+    /**
+     * Approach speed below which contacts do not bounce, so resting bodies do not jitter.
+     * Default 10 px/s (Box2D v3: 1 m/s; the original: 1/16 px per tick).
+     *
+     * @return the threshold (px/s)
+     */
+    public float getRestitutionThreshold() {
+        return restitutionThreshold;
+    }
+
+    /**
+     * Sets the restitution threshold.
+     *
+     * @param pxPerSecond the speed (px/s), ≥ 0
+     */
+    public void setRestitutionThreshold(float pxPerSecond) {
+        restitutionThreshold = Check.nonNegative("SolverSettings.setRestitutionThreshold", "pxPerSecond", pxPerSecond);
+    }
+
+    /**
+     * In dynamic-iteration mode, the solver counts as converged once no constraint changed a
+     * relative velocity by more than this in a relax pass. Default 0.05 px/s.
+     *
+     * @return the tolerance (px/s)
+     */
+    public float getConvergenceTolerance() {
+        return convergenceTolerance;
+    }
+
+    /**
+     * Sets the convergence tolerance.
+     *
+     * @param pxPerSecond the tolerance (px/s), &gt; 0
+     */
+    public void setConvergenceTolerance(float pxPerSecond) {
+        convergenceTolerance = Check.positive("SolverSettings.setConvergenceTolerance", "pxPerSecond", pxPerSecond);
+    }
+}

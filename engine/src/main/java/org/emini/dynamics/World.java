@@ -1,0 +1,447 @@
+package org.emini.dynamics;
+
+import org.emini.collision.BroadPhase;
+
+/**
+ * The simulated world: bodies, gravity, the solver's settings, and {@link #tick()}.
+ *
+ * <p>Defaults are the original engine's: 20 ticks per second, 10 iterations, gravity (0, 100) px/s²
+ * pointing down the screen, no damping. Change bodies and settings only between ticks.
+ *
+ * <p>One tick: update the broadphase and create contacts for pairs that came close; run the
+ * narrowphase on every contact; then solve. The solver splits the tick into substeps, one per
+ * iteration: each substep integrates velocities, warm-starts, makes one soft (position-correcting)
+ * pass over the contacts, integrates positions and makes one rigid relax pass. A restitution pass
+ * ends the tick. In dynamic-iteration mode the solver stops substepping once a relax pass changes no
+ * velocity by more than {@link SolverSettings#getConvergenceTolerance()} and integrates the rest of
+ * the tick in one step.
+ *
+ * <p>A tick allocates nothing once the world's arrays have grown to the scene, and the same world
+ * with the same inputs gives bit-identical results.
+ */
+public final class World {
+    private float timestep = 1f / 20f;
+    private int iterations = 10;
+    private boolean dynamicIterations;
+    private float gravityX;
+    private float gravityY = 100f;
+    private float dampingLateral;
+    private float dampingRotational;
+    private final SolverSettings settings = new SolverSettings();
+
+    private Body[] bodies = new Body[16];
+    private int bodyCount;
+    private Body[] slots = new Body[16];
+    private int[] freeSlots = new int[16];
+    private int freeSlotCount;
+    private int slotHigh;
+    private int nextBodyId;
+
+    private final BroadPhase broadPhase;
+    private final ContactManager contacts = new ContactManager(this);
+    private final SolverBodies solverBodies = new SolverBodies();
+    private final ContactSolver contactSolver = new ContactSolver();
+    private final Softness soft = new Softness();
+    private final Softness staticSoft = new Softness();
+    private final float[] aabb = new float[4];
+    private float lastSubstep;
+    private int lastIterationCount;
+    private long tickCount;
+
+    /** Creates an empty world with the original engine's defaults. */
+    public World() {
+        broadPhase = new BroadPhase(settings.getAabbMargin());
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Settings
+
+    /**
+     * The length of one tick.
+     *
+     * @return the timestep (s)
+     */
+    public float getTimestep() {
+        return timestep;
+    }
+
+    /**
+     * Sets the length of one tick.
+     *
+     * @param seconds the timestep (s), &gt; 0
+     */
+    public void setTimestep(float seconds) {
+        timestep = Check.positive("World.setTimestep", "seconds", seconds);
+    }
+
+    /**
+     * Sets the tick rate (the original engine's default is 20).
+     *
+     * @param ticksPerSecond the rate (1/s), &gt; 0
+     */
+    public void setTicksPerSecond(float ticksPerSecond) {
+        setTimestep(1f / Check.positive("World.setTicksPerSecond", "ticksPerSecond", ticksPerSecond));
+    }
+
+    /**
+     * The solver's effort per tick: the number of substeps (each a soft solve and a relax pass).
+     *
+     * @return the iteration count
+     */
+    public int getConstraintIterations() {
+        return iterations;
+    }
+
+    /**
+     * Sets the solver's effort per tick (default 10). In dynamic mode this is the maximum.
+     *
+     * @param iterations the count, 1 to 1000
+     */
+    public void setConstraintIterations(int iterations) {
+        if (iterations < 1 || iterations > 1000) {
+            throw new IllegalArgumentException("World.setConstraintIterations: iterations must be in 1..1000, was " + iterations);
+        }
+        this.iterations = iterations;
+    }
+
+    /**
+     * Whether the iteration count is dynamic.
+     *
+     * @return true in dynamic mode
+     */
+    public boolean isConstraintIterationDynamic() {
+        return dynamicIterations;
+    }
+
+    /**
+     * Lets the solver stop early once it has converged (dynamic mode) or always run all iterations.
+     *
+     * @param dynamic true for dynamic mode
+     */
+    public void setConstraintIterationDynamic(boolean dynamic) {
+        dynamicIterations = dynamic;
+    }
+
+    /**
+     * The number of iterations (substeps) the last tick used.
+     *
+     * @return the count
+     */
+    public int getLastIterationCount() {
+        return lastIterationCount;
+    }
+
+    /**
+     * The x component of gravity.
+     *
+     * @return gx (px/s²)
+     */
+    public float getGravityX() {
+        return gravityX;
+    }
+
+    /**
+     * The y component of gravity (positive pulls down the screen).
+     *
+     * @return gy (px/s²)
+     */
+    public float getGravityY() {
+        return gravityY;
+    }
+
+    /**
+     * Sets gravity, in any direction, including zero (a top-down world).
+     *
+     * @param gx x component (px/s²)
+     * @param gy y component (px/s²)
+     */
+    public void setGravity(float gx, float gy) {
+        gravityX = Check.finite("World.setGravity", "gx", gx);
+        gravityY = Check.finite("World.setGravity", "gy", gy);
+    }
+
+    /**
+     * The fraction of linear velocity removed each tick.
+     *
+     * @return the damping, in [0, 1]
+     */
+    public float getDampingLateral() {
+        return dampingLateral;
+    }
+
+    /**
+     * Sets the fraction of linear velocity removed each tick (the manual suggests 0 to 0.05).
+     *
+     * @param damping the fraction, in [0, 1]
+     */
+    public void setDampingLateral(float damping) {
+        dampingLateral = Check.unit("World.setDampingLateral", "damping", damping);
+    }
+
+    /**
+     * The fraction of angular velocity removed each tick.
+     *
+     * @return the damping, in [0, 1]
+     */
+    public float getDampingRotational() {
+        return dampingRotational;
+    }
+
+    /**
+     * Sets the fraction of angular velocity removed each tick.
+     *
+     * @param damping the fraction, in [0, 1]
+     */
+    public void setDampingRotational(float damping) {
+        dampingRotational = Check.unit("World.setDampingRotational", "damping", damping);
+    }
+
+    /**
+     * The contact solver's tuning, to read or change between ticks.
+     *
+     * @return the settings object of this world
+     */
+    public SolverSettings getSolverSettings() {
+        return settings;
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Bodies
+
+    /**
+     * Adds a body. A body belongs to one world at a time.
+     *
+     * @param body the body
+     */
+    public void addBody(Body body) {
+        Check.notNull("World.addBody", "body", body);
+        if (body.world != null) {
+            throw new IllegalArgumentException("World.addBody: " + body + " already belongs to a world");
+        }
+        int slot = freeSlotCount > 0 ? freeSlots[--freeSlotCount] : slotHigh++;
+        if (slot == slots.length) {
+            Body[] grown = new Body[slots.length * 2];
+            System.arraycopy(slots, 0, grown, 0, slots.length);
+            slots = grown;
+        }
+        slots[slot] = body;
+        if (bodyCount == bodies.length) {
+            Body[] grown = new Body[bodies.length * 2];
+            System.arraycopy(bodies, 0, grown, 0, bodyCount);
+            bodies = grown;
+        }
+        body.world = this;
+        body.id = nextBodyId++;
+        body.worldIndex = bodyCount;
+        bodies[bodyCount++] = body;
+        body.slot = slot;
+        body.getShape().computeAabb(body.x, body.y, body.c, body.s, aabb);
+        body.proxyId = broadPhase.createProxy(aabb[0], aabb[1], aabb[2], aabb[3], slot);
+    }
+
+    /**
+     * Removes a body and its contacts. Other bodies keep their order.
+     *
+     * @param body the body
+     * @return true when the body was in this world
+     */
+    public boolean removeBody(Body body) {
+        if (body == null || body.world != this) {
+            return false;
+        }
+        contacts.destroyContactsOf(body);
+        broadPhase.destroyProxy(body.proxyId);
+        slots[body.slot] = null;
+        if (freeSlotCount == freeSlots.length) {
+            int[] grown = new int[freeSlotCount * 2];
+            System.arraycopy(freeSlots, 0, grown, 0, freeSlotCount);
+            freeSlots = grown;
+        }
+        freeSlots[freeSlotCount++] = body.slot;
+        int i = body.worldIndex;
+        System.arraycopy(bodies, i + 1, bodies, i, bodyCount - i - 1);
+        bodies[--bodyCount] = null;
+        for (int k = i; k < bodyCount; k++) {
+            bodies[k].worldIndex = k;
+        }
+        body.world = null;
+        body.worldIndex = -1;
+        body.proxyId = -1;
+        body.slot = -1;
+        return true;
+    }
+
+    /**
+     * The number of bodies.
+     *
+     * @return the count
+     */
+    public int getBodyCount() {
+        return bodyCount;
+    }
+
+    /**
+     * A body by its position in the world's list (insertion order).
+     *
+     * @param index 0 to {@link #getBodyCount()} − 1
+     * @return the body
+     */
+    public Body getBody(int index) {
+        if (index < 0 || index >= bodyCount) {
+            throw new IndexOutOfBoundsException("World.getBody: index " + index + " of " + bodyCount);
+        }
+        return bodies[index];
+    }
+
+    /**
+     * Finds a body by the id the world gave it.
+     *
+     * @param id the id
+     * @return the body, or null
+     */
+    public Body findBodyById(int id) {
+        for (int i = 0; i < bodyCount; i++) {
+            if (bodies[i].id == id) {
+                return bodies[i];
+            }
+        }
+        return null;
+    }
+
+    Body bodyInSlot(int slot) {
+        return slots[slot];
+    }
+
+    void bodyGeometryChanged(Body b) {
+        b.proxyDirty = true;
+    }
+
+    void bodyFilterChanged(Body b) {
+        contacts.markFilterDirty(b);
+        broadPhase.touchProxy(b.proxyId);
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Contacts
+
+    /**
+     * The number of contacts (pairs of bodies close enough to be tested), touching or not.
+     *
+     * @return the count
+     */
+    public int getContactCount() {
+        return contacts.count;
+    }
+
+    /**
+     * A contact by index. Valid until the next tick.
+     *
+     * @param index 0 to {@link #getContactCount()} − 1
+     * @return the contact
+     */
+    public Contact getContact(int index) {
+        if (index < 0 || index >= contacts.count) {
+            throw new IndexOutOfBoundsException("World.getContact: index " + index + " of " + contacts.count);
+        }
+        return contacts.contacts[index];
+    }
+
+    /**
+     * The number of ticks run so far.
+     *
+     * @return the tick count
+     */
+    public long getTickCount() {
+        return tickCount;
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // The tick
+
+    /** Advances the world by one timestep. */
+    public void tick() {
+        float dt = timestep;
+        updateBroadPhase(dt);
+        broadPhase.updatePairs(contacts);
+        contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
+        solve(dt);
+        tickCount++;
+    }
+
+    private void updateBroadPhase(float dt) {
+        float[] box = aabb;
+        for (int i = 0; i < bodyCount; i++) {
+            Body b = bodies[i];
+            if (!b.isDynamic() && !b.proxyDirty) {
+                continue;
+            }
+            b.proxyDirty = false;
+            b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
+            broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], b.vx * dt, b.vy * dt);
+        }
+    }
+
+    private void solve(float dt) {
+        int n = iterations;
+        float h = dt / n;
+        SolverBodies sb = solverBodies;
+        sb.reset(bodyCount);
+        for (int i = 0; i < bodyCount; i++) {
+            Body b = bodies[i];
+            b.solverIndex = b.isDynamic() ? sb.add(b, gravityX, gravityY) : 0;
+        }
+        setSoftness(h);
+        contactSolver.prepare(contacts.contacts, contacts.count, sb, soft, staticSoft);
+        // Stored impulses belong to the substep they were computed for.
+        if (lastSubstep != 0f && lastSubstep != h) {
+            contactSolver.scaleImpulses(h / lastSubstep);
+        }
+        float maxPush = settings.getContactPushMaxVelocity();
+        float slop = settings.getLinearSlop();
+        float tolerance = settings.getConvergenceTolerance();
+        int used = 0;
+        float hh = h;
+        for (int i = 0; i < n; i++) {
+            if (dynamicIterations && i > 0 && contactSolver.lastRelaxChange < tolerance) {
+                // Converged: one step for the rest of the tick.
+                float rest = h * (n - i);
+                contactSolver.scaleImpulses(rest / h);
+                setSoftness(rest);
+                contactSolver.resoften(soft, staticSoft);
+                hh = rest;
+                i = n - 1;
+            }
+            float invH = 1f / hh;
+            sb.integrateVelocities(hh);
+            contactSolver.warmStart(sb);
+            contactSolver.solve(sb, true, invH, maxPush, slop);
+            sb.integratePositions(hh);
+            contactSolver.solve(sb, false, invH, maxPush, slop);
+            used++;
+        }
+        contactSolver.applyRestitution(sb, settings.getRestitutionThreshold());
+        contactSolver.storeImpulses();
+        lastSubstep = hh;
+        lastIterationCount = used;
+        Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);
+        if (bad != null) {
+            throw new IllegalStateException("World.tick: " + bad + " became non-finite in tick " + tickCount
+                + "; check the forces and settings applied to it");
+        }
+        for (int i = 0; i < bodyCount; i++) {
+            Body b = bodies[i];
+            if (b.isDynamic()) {
+                continue;
+            }
+            b.forceX = 0f;
+            b.forceY = 0f;
+            b.torque = 0f;
+        }
+    }
+
+    private void setSoftness(float h) {
+        float hertz = Math.min(settings.getContactHertz(), 0.25f / h);
+        soft.set(hertz, settings.getContactDampingRatio(), h);
+        staticSoft.set(2f * hertz, settings.getContactDampingRatio(), h);
+    }
+}

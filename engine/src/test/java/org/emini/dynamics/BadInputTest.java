@@ -1,0 +1,56 @@
+package org.emini.dynamics;
+
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.emini.shape.Shape;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.function.Executable;
+
+/** NaN and infinite input is refused at the call that introduces it, with a message naming it. */
+class BadInputTest {
+    private static void refused(String expectedInMessage, Executable call) {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, call);
+        assertTrue(e.getMessage().contains(expectedInMessage), e.getMessage());
+    }
+
+    @Test
+    void bodyStateRefusesNonFiniteValues() {
+        Shape shape = Shape.createCircle(5f);
+        Body b = new Body(0f, 0f, shape, true);
+        refused("Body(x, y, shape, dynamic): x", () -> new Body(Float.NaN, 0f, shape, true));
+        refused("Body.setPosition: y", () -> b.setPosition(0f, Float.POSITIVE_INFINITY));
+        refused("Body.setVelocity: vx", () -> b.setVelocity(Float.NaN, 0f));
+        refused("Body.setAngularVelocity", () -> b.setAngularVelocity(Float.NEGATIVE_INFINITY));
+        refused("Body.setAngle", () -> b.setAngle(Float.NaN));
+        refused("Body.applyForce: fy", () -> b.applyForce(0f, Float.NaN));
+        refused("Body.applyImpulse: jx", () -> b.applyImpulse(Float.NaN, 0f));
+        refused("Body.applyTorque", () -> b.applyTorque(Float.NaN));
+        refused("Body.addCollisionLayer", () -> b.addCollisionLayer(32));
+        refused("shape", () -> new Body(0f, 0f, null, true));
+    }
+
+    @Test
+    void massAndMaterialRefuseBadValues() {
+        Shape shape = Shape.createRectangle(10f, 10f);
+        assertThrows(IllegalArgumentException.class, () -> shape.setMass(Float.NaN));
+        assertThrows(IllegalArgumentException.class, () -> shape.setMass(0f));
+        assertThrows(IllegalArgumentException.class, () -> shape.setMass(Float.POSITIVE_INFINITY));
+        assertThrows(IllegalArgumentException.class, () -> shape.setFriction(1.5f));
+        assertThrows(IllegalArgumentException.class, () -> shape.setElasticity(Float.NaN));
+    }
+
+    @Test
+    void worldSettingsRefuseBadValues() {
+        World world = new World();
+        refused("World.setGravity: gx", () -> world.setGravity(Float.NaN, 0f));
+        refused("World.setTimestep", () -> world.setTimestep(0f));
+        refused("World.setTimestep", () -> world.setTimestep(Float.NaN));
+        refused("World.setConstraintIterations", () -> world.setConstraintIterations(0));
+        refused("World.setDampingLateral", () -> world.setDampingLateral(2f));
+        refused("SolverSettings.setContactHertz", () -> world.getSolverSettings().setContactHertz(Float.NaN));
+        Body b = new Body(0f, 0f, Shape.createCircle(1f), true);
+        world.addBody(b);
+        refused("already belongs", () -> world.addBody(b));
+    }
+}

@@ -1,0 +1,76 @@
+package org.emini.dynamics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Random;
+import org.emini.shape.Shape;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * Contact impulses are equal and opposite, so with gravity off linear momentum is conserved to
+ * rounding. Angular momentum is conserved to first order only: within a tick each body applies the
+ * impulse at its anchor fixed at the tick's start, and the anchors of the two bodies drift apart as
+ * the bodies move during the substeps (the price of solving on fixed anchors, as Box2D v3 does).
+ */
+class MomentumConservationTest {
+    @ParameterizedTest
+    @ValueSource(longs = {1, 2, 3, 4, 5})
+    void linearAndAngularMomentumAreConservedThroughCollisions(long seed) {
+        Random random = new Random(seed);
+        World world = new World();
+        world.setGravity(0f, 0f);
+        Shape[] shapes = {
+            Shape.createRectangle(20f, 20f), Shape.createCircle(8f), Shape.createRegularPolygon(12f, 5),
+            Shape.createRectangle(40f, 10f), Shape.createCircle(15f),
+        };
+        shapes[1].setMass(3f);
+        shapes[3].setMass(0.5f);
+        shapes[4].setElasticity(0.8f);
+        shapes[0].setElasticity(0.5f);
+        for (int i = 0; i < 30; i++) {
+            Body b = new Body(random.nextFloat() * 300f, random.nextFloat() * 300f, shapes[i % shapes.length], true);
+            b.setVelocity(random.nextFloat() * 200f - 100f, random.nextFloat() * 200f - 100f);
+            b.setAngularVelocity(random.nextFloat() * 4f - 2f);
+            b.setAngle(random.nextFloat() * 6f);
+            world.addBody(b);
+        }
+        double[] before = momentum(world);
+        int touching = 0;
+        for (int t = 0; t < 200; t++) {
+            world.tick();
+            for (int k = 0; k < world.getContactCount(); k++) {
+                touching += world.getContact(k).getPointCount();
+            }
+        }
+        double[] after = momentum(world);
+        assertTrue(touching > 50, "the scene must actually collide, contact points seen: " + touching);
+        double scale = before[3];
+        assertEquals(before[0], after[0], 1e-5 * scale, "px");
+        assertEquals(before[1], after[1], 1e-5 * scale, "py");
+        double angularScale = before[4];
+        assertEquals(before[2], after[2], 0.02 * angularScale, "L");
+    }
+
+    /** px, py, angular momentum about the origin, Σ m|v|, Σ |I ω| + m |r × v|. */
+    static double[] momentum(World world) {
+        double px = 0;
+        double py = 0;
+        double l = 0;
+        double scale = 0;
+        double angularScale = 0;
+        for (int i = 0; i < world.getBodyCount(); i++) {
+            Body b = world.getBody(i);
+            double m = b.getMass();
+            px += m * b.getVelocityX();
+            py += m * b.getVelocityY();
+            double orbital = m * ((double) b.getX() * b.getVelocityY() - (double) b.getY() * b.getVelocityX());
+            double spin = b.getInertia() * b.getAngularVelocity();
+            l += orbital + spin;
+            scale += m * Math.hypot(b.getVelocityX(), b.getVelocityY());
+            angularScale += Math.abs(orbital) + Math.abs(spin);
+        }
+        return new double[] {px, py, l, scale, angularScale};
+    }
+}
