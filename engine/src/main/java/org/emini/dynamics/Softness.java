@@ -14,6 +14,7 @@ final class Softness {
     float massScale = 1f;
     /** Fraction of the accumulated impulse relaxed away each solve. */
     float impulseScale;
+    private final float[] scratch = new float[3];
 
     /**
      * Sets the coefficients.
@@ -23,19 +24,27 @@ final class Softness {
      * @param h the substep (s)
      */
     Softness set(float hertz, float dampingRatio, float h) {
+        coefficients(hertz, dampingRatio, h, scratch);
+        biasRate = scratch[0];
+        massScale = scratch[1];
+        impulseScale = scratch[2];
+        return this;
+    }
+
+    /** The same coefficients into an array: bias rate, mass scale, impulse scale. */
+    static void coefficients(float hertz, float dampingRatio, float h, float[] out) {
         if (hertz == 0f) {
-            biasRate = 0f;
-            massScale = 1f;
-            impulseScale = 0f;
-            return this;
+            out[0] = 0f;
+            out[1] = 1f;
+            out[2] = 0f;
+            return;
         }
         float omega = EMath.TWO_PI * hertz;
         float a1 = 2f * dampingRatio + h * omega;
         float a2 = h * omega * a1;
         float a3 = 1f / (1f + a2);
-        biasRate = omega / a1;
-        massScale = a2 * a3;
-        impulseScale = a3;
-        return this;
+        out[0] = omega / a1;
+        out[1] = a2 * a3;
+        out[2] = a3;
     }
 }

@@ -16,6 +16,8 @@ public final class SolverSettings {
     private float contactPushMaxVelocity = 60f;
     private float restitutionThreshold = 10f;
     private float convergenceTolerance = 0.05f;
+    private float jointHertz = 60f;
+    private float jointDampingRatio = 2f;
 
     /** Creates the default settings. */
     public SolverSettings() {
@@ -173,5 +175,42 @@ public final class SolverSettings {
      */
     public void setConvergenceTolerance(float pxPerSecond) {
         convergenceTolerance = Check.positive("SolverSettings.setConvergenceTolerance", "pxPerSecond", pxPerSecond);
+    }
+
+    /**
+     * Stiffness of the position correction of rigid joints, as a natural frequency, capped at a
+     * quarter of the substep rate. Default 60 Hz (Box2D v3).
+     *
+     * @return the joint frequency (Hz)
+     */
+    public float getJointHertz() {
+        return jointHertz;
+    }
+
+    /**
+     * Sets the joint stiffness.
+     *
+     * @param hertz the frequency (Hz), &gt; 0
+     */
+    public void setJointHertz(float hertz) {
+        jointHertz = Check.positive("SolverSettings.setJointHertz", "hertz", hertz);
+    }
+
+    /**
+     * Damping ratio of the position correction of rigid joints. Default 2 (Box2D v3).
+     *
+     * @return the damping ratio
+     */
+    public float getJointDampingRatio() {
+        return jointDampingRatio;
+    }
+
+    /**
+     * Sets the joint damping ratio.
+     *
+     * @param ratio the ratio, ≥ 0
+     */
+    public void setJointDampingRatio(float ratio) {
+        jointDampingRatio = Check.nonNegative("SolverSettings.setJointDampingRatio", "ratio", ratio);
     }
 }

@@ -41,6 +41,9 @@ public final class World {
     private final ContactManager contacts = new ContactManager(this);
     private final SolverBodies solverBodies = new SolverBodies();
     private final ContactSolver contactSolver = new ContactSolver();
+    private final SolverStep step = new SolverStep(solverBodies);
+    private Constraint[] constraints = new Constraint[8];
+    private int constraintCount;
     private final Softness soft = new Softness();
     private final Softness staticSoft = new Softness();
     private final float[] aabb = new float[4];
@@ -240,7 +243,8 @@ public final class World {
     }
 
     /**
-     * Removes a body and its contacts. Other bodies keep their order.
+     * Removes a body, its contacts and the constraints that act on it. Other bodies keep their
+     * order.
      *
      * @param body the body
      * @return true when the body was in this world
@@ -250,6 +254,7 @@ public final class World {
             return false;
         }
         contacts.destroyContactsOf(body);
+        removeConstraintsOf(body);
         broadPhase.destroyProxy(body.proxyId);
         slots[body.slot] = null;
         if (freeSlotCount == freeSlots.length) {
@@ -322,6 +327,82 @@ public final class World {
     }
 
     // ---------------------------------------------------------------------------------------------
+    // Constraints
+
+    /**
+     * Adds a constraint (a joint, spring, motor or one of the application's own). Constraints are
+     * solved in the order they were added, before the contacts.
+     *
+     * @param constraint the constraint
+     */
+    public void addConstraint(Constraint constraint) {
+        Check.notNull("World.addConstraint", "constraint", constraint);
+        for (int i = 0; i < constraintCount; i++) {
+            if (constraints[i] == constraint) {
+                throw new IllegalArgumentException("World.addConstraint: the constraint is already in this world");
+            }
+        }
+        if (constraintCount == constraints.length) {
+            Constraint[] grown = new Constraint[constraintCount * 2];
+            System.arraycopy(constraints, 0, grown, 0, constraintCount);
+            constraints = grown;
+        }
+        constraints[constraintCount++] = constraint;
+    }
+
+    /**
+     * Removes a constraint.
+     *
+     * @param constraint the constraint
+     * @return true when it was in this world
+     */
+    public boolean removeConstraint(Constraint constraint) {
+        for (int i = 0; i < constraintCount; i++) {
+            if (constraints[i] == constraint) {
+                System.arraycopy(constraints, i + 1, constraints, i, constraintCount - i - 1);
+                constraints[--constraintCount] = null;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The number of constraints.
+     *
+     * @return the count
+     */
+    public int getConstraintCount() {
+        return constraintCount;
+    }
+
+    /**
+     * A constraint by its position in the world's list (insertion order).
+     *
+     * @param index 0 to {@link #getConstraintCount()} − 1
+     * @return the constraint
+     */
+    public Constraint getConstraint(int index) {
+        if (index < 0 || index >= constraintCount) {
+            throw new IndexOutOfBoundsException("World.getConstraint: index " + index + " of " + constraintCount);
+        }
+        return constraints[index];
+    }
+
+    private void removeConstraintsOf(Body body) {
+        int kept = 0;
+        for (int i = 0; i < constraintCount; i++) {
+            if (!constraints[i].concernsBody(body)) {
+                constraints[kept++] = constraints[i];
+            }
+        }
+        for (int i = kept; i < constraintCount; i++) {
+            constraints[i] = null;
+        }
+        constraintCount = kept;
+    }
+
+    // ---------------------------------------------------------------------------------------------
     // Contacts
 
     /**
@@ -391,36 +472,60 @@ public final class World {
             b.solverIndex = b.isDynamic() ? sb.add(b, gravityX, gravityY) : 0;
         }
         setSoftness(h);
+        float jointHertz = settings.getJointHertz();
+        float jointDamping = settings.getJointDampingRatio();
+        step.begin(dt, h, jointHertz, jointDamping);
         contactSolver.prepare(contacts.contacts, contacts.count, sb, soft, staticSoft);
         // Stored impulses belong to the substep they were computed for.
         if (lastSubstep != 0f && lastSubstep != h) {
             contactSolver.scaleImpulses(h / lastSubstep);
+        }
+        Constraint[] cs = constraints;
+        int cn = constraintCount;
+        for (int c = 0; c < cn; c++) {
+            cs[c].prepare(step);
         }
         float maxPush = settings.getContactPushMaxVelocity();
         float slop = settings.getLinearSlop();
         float tolerance = settings.getConvergenceTolerance();
         int used = 0;
         float hh = h;
+        float change = Float.MAX_VALUE;
         for (int i = 0; i < n; i++) {
-            if (dynamicIterations && i > 0 && contactSolver.lastRelaxChange < tolerance) {
+            if (dynamicIterations && i > 0 && change < tolerance) {
                 // Converged: one step for the rest of the tick.
                 float rest = h * (n - i);
                 contactSolver.scaleImpulses(rest / h);
                 setSoftness(rest);
                 contactSolver.resoften(soft, staticSoft);
+                step.setSubstep(rest, jointHertz, jointDamping);
                 hh = rest;
                 i = n - 1;
             }
             float invH = 1f / hh;
             sb.integrateVelocities(hh);
+            for (int c = 0; c < cn; c++) {
+                cs[c].warmStart(step);
+            }
             contactSolver.warmStart(sb);
+            for (int c = 0; c < cn; c++) {
+                cs[c].solve(step, true);
+            }
             contactSolver.solve(sb, true, invH, maxPush, slop);
             sb.integratePositions(hh);
+            change = 0f;
+            for (int c = 0; c < cn; c++) {
+                change = Math.max(change, cs[c].solve(step, false));
+            }
             contactSolver.solve(sb, false, invH, maxPush, slop);
+            change = Math.max(change, contactSolver.lastRelaxChange);
             used++;
         }
         contactSolver.applyRestitution(sb, settings.getRestitutionThreshold());
         contactSolver.storeImpulses();
+        for (int c = 0; c < cn; c++) {
+            cs[c].finish(step);
+        }
         lastSubstep = hh;
         lastIterationCount = used;
         Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);

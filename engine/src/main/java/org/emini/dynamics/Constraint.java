@@ -1,0 +1,66 @@
+package org.emini.dynamics;
+
+/**
+ * A constraint solved together with the contacts: joints, springs and motors implement it, and so can
+ * an application's own constraints (the manual's "implementing the interface constraint").
+ *
+ * <p>Each tick the world calls {@link #prepare} once, then for every substep {@link #warmStart}, a
+ * biased {@link #solve} (which may correct position error), and after the positions have moved an
+ * unbiased {@link #solve} (which must not), and finally {@link #finish}. All velocity access goes
+ * through the {@link SolverStep}, which holds the bodies' state for the tick. Implementations must
+ * not allocate in these calls.
+ *
+ * <p>Accumulated impulses are impulses per substep. When {@link SolverStep#getSubstep()} differs
+ * from the substep an impulse was accumulated over (the timestep or iteration count changed, or
+ * dynamic iterations merged the rest of a tick into one step), scale it by the ratio before warm
+ * starting with it.
+ */
+public interface Constraint {
+    /**
+     * Whether this constraint acts on a body; a body's removal removes its constraints.
+     *
+     * @param body the body
+     * @return true when the constraint involves it
+     */
+    boolean concernsBody(Body body);
+
+    /**
+     * Computes what stays fixed over the tick (anchors, effective masses) and applies nothing yet.
+     *
+     * @param step the tick's solver state
+     */
+    void prepare(SolverStep step);
+
+    /**
+     * Re-applies the impulse accumulated so far, at the start of each substep.
+     *
+     * @param step the tick's solver state
+     */
+    void warmStart(SolverStep step);
+
+    /**
+     * One Gauss–Seidel pass over this constraint.
+     *
+     * @param step the tick's solver state
+     * @param useBias true for the pass that corrects position error, false for the relax pass
+     * @return the largest change of relative velocity this pass made (px/s, or rad/s times a
+     *     length), used by dynamic iterations to decide convergence; return 0 when converged
+     */
+    float solve(SolverStep step, boolean useBias);
+
+    /**
+     * Called once after the substeps: store what the next tick warm-starts from and what
+     * {@link #getForce()} reports.
+     *
+     * @param step the tick's solver state
+     */
+    void finish(SolverStep step);
+
+    /**
+     * The magnitude of the force (or torque, for angular constraints) this constraint exerted in
+     * the last tick, for events and for the application.
+     *
+     * @return the force (mass·px/s²), or torque (mass·px²/s²)
+     */
+    float getForce();
+}
