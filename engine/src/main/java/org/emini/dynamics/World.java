@@ -42,6 +42,7 @@ public final class World {
     private final SolverBodies solverBodies = new SolverBodies();
     private final ContactSolver contactSolver = new ContactSolver();
     private final SolverStep step = new SolverStep(solverBodies);
+    private final ContinuousSolver continuous = new ContinuousSolver(this);
     private Constraint[] constraints = new Constraint[8];
     private int constraintCount;
     private final Softness soft = new Softness();
@@ -317,6 +318,10 @@ public final class World {
         return slots[slot];
     }
 
+    int getBroadPhaseUserData(int proxyId) {
+        return broadPhase.getUserData(proxyId);
+    }
+
     void bodyGeometryChanged(Body b) {
         b.proxyDirty = true;
     }
@@ -526,6 +531,7 @@ public final class World {
         for (int c = 0; c < cn; c++) {
             cs[c].finish(step);
         }
+        continuous.solve(sb, broadPhase, 4f * slop + 0.05f);
         lastSubstep = hh;
         lastIterationCount = used;
         Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);
