@@ -160,11 +160,12 @@ public final class WorldBuilder {
                 }
                 shape = Shape.createCircle(radius);
             } else if (n == 2) {
-                shape = lineSlab(s.getVertex(0), s.getVertex(1));
-                if (shape == null) {
+                float[] slab = lineSlab(s.getVertex(0), s.getVertex(1), lineThickness);
+                if (slab == null) {
                     r.unsupported(UnsupportedElement.Kind.SHAPE, index, "a line of length 0");
                     return null;
                 }
+                shape = Shape.createPolygon(slab);
                 r.approximated(UnsupportedElement.Kind.SHAPE, index, "a line, built as a slab " + lineThickness
                         + " px thick centred on it; on a dynamic body the original gives it infinite mass");
             } else if (n >= 3 && n <= Shape.MAX_VERTICES) {
@@ -204,18 +205,28 @@ public final class WorldBuilder {
         return clamped;
     }
 
-    private Shape lineSlab(PhyVector a, PhyVector b) {
+    /**
+     * The slab that stands in for a line (two-vertex) shape: the rectangle with the line as its
+     * centre line, as x0, y0, … x3, y3 in the original's winding (counter-clockwise on a y-down
+     * screen).
+     *
+     * @param a the line's first vertex (px)
+     * @param b the line's second vertex (px)
+     * @param thickness the slab's thickness (px), &gt; 0
+     * @return the four corners, or null when the line has length 0
+     */
+    public static float[] lineSlab(PhyVector a, PhyVector b, float thickness) {
         float dx = b.getX() - a.getX();
         float dy = b.getY() - a.getY();
         float length = EMath.sqrt(dx * dx + dy * dy);
         if (!(length > 0f)) {
             return null;
         }
-        float h = 0.5f * lineThickness / length;
+        float h = 0.5f * thickness / length;
         float nx = -dy * h;
         float ny = dx * h;
-        return Shape.createPolygon(a.getX() + nx, a.getY() + ny, b.getX() + nx, b.getY() + ny,
-                b.getX() - nx, b.getY() - ny, a.getX() - nx, a.getY() - ny);
+        return new float[] {a.getX() + nx, a.getY() + ny, b.getX() + nx, b.getY() + ny,
+            b.getX() - nx, b.getY() - ny, a.getX() - nx, a.getY() - ny};
     }
 
     private static void buildBody(PhyBody b, int index, BuildResult r) {

@@ -108,6 +108,20 @@ class WorldBuilderTest {
     }
 
     @Test
+    void theLineSlabIsListedInTheOriginalsWinding() {
+        float[] xy = WorldBuilder.lineSlab(PhyVector.of(-100, 0), PhyVector.of(100, 0), 1);
+        assertEquals(List.of(-100f, 0.5f, 100f, 0.5f, 100f, -0.5f, -100f, -0.5f),
+                List.of(xy[0], xy[1], xy[2], xy[3], xy[4], xy[5], xy[6], xy[7]));
+        float winding = 0;
+        for (int i = 0; i < 4; i++) {
+            int j = (i + 1) % 4;
+            winding += xy[2 * j] * xy[2 * i + 1] - xy[2 * j + 1] * xy[2 * i];
+        }
+        assertTrue(winding > 0, "x(i+1)·y(i) − y(i+1)·x(i) sums positive, as in every designer file");
+        assertNull(WorldBuilder.lineSlab(PhyVector.of(3, 4), PhyVector.of(3, 4), 1));
+    }
+
+    @Test
     void flagsAndLayersCarryOver() {
         PhyBody b = new PhyBody();
         b.setFlags(PhyBody.FLAG_NOT_INTERACTING | PhyBody.FLAG_NO_GRAVITY);
