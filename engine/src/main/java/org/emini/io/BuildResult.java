@@ -116,6 +116,21 @@ public final class BuildResult {
         return Collections.unmodifiableList(approximations);
     }
 
+    /** The shape built for an entry; null when not built or when the index names no entry. */
+    Shape shapeAt(int index) {
+        return index >= 0 && index < shapes.length ? shapes[index] : null;
+    }
+
+    /** The body built for a record; null when not built or when the index names no record. */
+    Body bodyAt(int index) {
+        return index >= 0 && index < bodies.length ? bodies[index] : null;
+    }
+
+    /** Why a reference yields nothing: the record is not built, or there is no such record. */
+    static String missing(String what, int index, int count) {
+        return "its " + what + " " + index + (index < count ? " is not built" : " does not exist");
+    }
+
     void setShape(int index, Shape shape) {
         shapes[index] = shape;
     }

@@ -230,9 +230,10 @@ public final class WorldBuilder {
     }
 
     private static void buildBody(PhyBody b, int index, BuildResult r) {
-        Shape shape = r.getShape(b.getShapeIndex());
+        Shape shape = r.shapeAt(b.getShapeIndex());
         if (shape == null) {
-            r.unsupported(UnsupportedElement.Kind.BODY, index, "its shape " + b.getShapeIndex() + " is not built");
+            r.unsupported(UnsupportedElement.Kind.BODY, index,
+                    BuildResult.missing("shape", b.getShapeIndex(), r.getDocument().getShapes().size()));
             return;
         }
         Body body = new Body(b.getPosition().getX(), b.getPosition().getY(), shape, b.isDynamic());

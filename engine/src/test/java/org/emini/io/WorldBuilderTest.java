@@ -308,6 +308,15 @@ class WorldBuilderTest {
     }
 
     @Test
+    void aReferenceToNoRecordIsListedNotThrown() {
+        PhyBody b = new PhyBody();
+        b.setShapeIndex(5);
+        BuildResult r = new WorldBuilder().build(oneBody(square(10), b));
+        assertEquals("body 0: its shape 5 does not exist", r.getUnsupported().get(0).toString());
+        assertEquals(0, r.getWorld().getBodyCount());
+    }
+
+    @Test
     void aStaticBodyWithAStoredVelocityIsNoted() {
         PhyBody b = new PhyBody();
         b.setFlags(PhyBody.FLAG_ROTATES);
