@@ -260,7 +260,7 @@ public final class Motor implements Constraint {
             step.applyAngularImpulse(index, accAngular);
         } else {
             frame(step);
-            applyLocal(step, accX, accY);
+            applyLocal(step, impulseX(), impulseY());
         }
     }
 
@@ -315,13 +315,23 @@ public final class Motor implements Constraint {
             if (rotational) {
                 tickAngular += accAngular;
             } else {
-                float jx = orthogonal ? accX : accX * dirX;
-                float jy = orthogonal ? accY : accX * dirY;
+                float jx = impulseX();
+                float jy = impulseY();
                 tickX += frameC * jx - frameS * jy;
                 tickY += frameS * jx + frameC * jy;
             }
         }
         return change;
+    }
+
+    /** x of the substep's linear impulse in the motor's frame (accX is along the direction unless orthogonal). */
+    private float impulseX() {
+        return orthogonal ? accX : accX * dirX;
+    }
+
+    /** y of the substep's linear impulse in the motor's frame. */
+    private float impulseY() {
+        return orthogonal ? accY : accX * dirY;
     }
 
     /** The motor's frame now: the body's current rotation in relative mode, else the world's. */

@@ -18,11 +18,13 @@ import org.emini.math.EMath;
  * spring's natural frequency times the timestep exceeds 2, but as a soft constraint: the
  * spring-damper is integrated implicitly over each substep, with ω = √(k/m) and
  * ζ = c/(2√(k·m)) for the effective mass m along the anchor line. That is stable at any stiffness.
- * A purely implicit step damps the oscillation numerically, so for springs the substep resolves
- * (ω·h well below 1) the step is centred instead (the implicit midpoint rule: the biased pass
- * solves the spring over half the substep, the positions move with that midpoint velocity, and the
- * relax pass applies the second half), which keeps the energy of an undamped spring and so its
- * closed-form period and decay. The blend moves smoothly to the fully implicit step as ω·h
+ * A purely implicit step damps the oscillation numerically (an undamped spring at 60 ticks per
+ * second would lose two thirds of its amplitude in 20 periods), so for springs the substep
+ * resolves (ω·h well below 1) the step is centred instead: the implicit midpoint rule. The biased
+ * pass solves the spring over half the substep, the positions move with that midpoint velocity,
+ * and the other half of the substep's impulse is applied at the start of the next substep. That
+ * keeps the energy of an undamped spring, so the closed-form period and decay, and a body resting
+ * on a spring reports zero velocity. The blend moves smoothly to the fully implicit step as ω·h
  * approaches 2, where a centred step would ring.
  */
 public final class Spring extends TwoBodyConstraint {
@@ -36,8 +38,10 @@ public final class Spring extends TwoBodyConstraint {
     private float dampingRatio;
 
     private boolean active;
-    // Impulse of the current substep along the anchor line (positive pushes B away from A).
+    // Impulse of the current substep's solve along the anchor line (positive pushes B away from A).
     private float acc;
+    // The second half of the last substep's centred spring impulse, applied when the next begins.
+    private float pending;
     // Fraction of the substep the biased pass solved the spring over (1/2 centred, 1 implicit).
     private float theta = 1f;
     private float tick;
@@ -203,18 +207,22 @@ public final class Spring extends TwoBodyConstraint {
             return;
         }
         acc *= substepScale(step);
+        float impulse = acc + pending;
+        pending = 0f;
         arms(step);
         float len = EMath.sqrt(sepX * sepX + sepY * sepY);
         if (len < MIN_LENGTH) {
             return;
         }
-        float f = acc / len;
+        float f = impulse / len;
         applyLinear(step, f * sepX, f * sepY);
     }
 
     @Override
     public float solve(SolverStep step, boolean useBias) {
-        if (!active) {
+        boolean rigid = isRigid();
+        // A spring with a coefficient is solved for the whole substep in the biased pass.
+        if (!active || !(rigid || useBias)) {
             return 0f;
         }
         arms(step);
@@ -232,28 +240,26 @@ public final class Spring extends TwoBodyConstraint {
             return 0f;
         }
         float impulse;
-        float change;
-        if (isRigid()) {
+        if (rigid) {
             float cdot = relativeVelocityX(step) * ux + relativeVelocityY(step) * uy;
             float bias = useBias ? step.getJointBiasRate() * (len - restLength) : 0f;
             float massScale = useBias ? step.getJointMassScale() : 1f;
             float impulseScale = useBias ? step.getJointImpulseScale() : 0f;
             impulse = -massScale * (cdot + bias) / k - impulseScale * acc;
-            change = Math.abs(impulse * k);
-        } else if (useBias) {
-            impulse = softImpulse(step, k, len, ux, uy);
-            change = Math.abs(impulse * k);
+            acc += impulse;
+            if (!useBias) {
+                // The relax pass ends the substep: its impulse is final.
+                tick += acc;
+            }
         } else {
-            // The second part of a centred step: the rest of the substep's spring impulse, as it is.
-            impulse = acc * (1f - theta) / theta;
-            change = 0f;
+            impulse = softImpulse(step, k, len, ux, uy);
+            acc += impulse;
+            // acc is the first part, θ of the substep's impulse; the rest waits for the next substep.
+            pending = acc * (1f - theta) / theta;
+            tick += acc / theta;
         }
-        acc += impulse;
         applyLinear(step, impulse * ux, impulse * uy);
-        if (!useBias) {
-            tick += acc;
-        }
-        return change;
+        return Math.abs(impulse * k);
     }
 
     /**
