@@ -11,6 +11,9 @@ import org.emini.dynamics.SolverStep;
  * <p>Anchor arms are rotated by each body's rotation since the tick began, and the anchors'
  * separation is measured from the bodies' motion since then ({@link SolverStep#getDeltaX(int)} and
  * friends), as the contacts do: the error is exact at every substep, so the joint does not drift.
+ *
+ * <p>Only this package extends it; an application's own constraints implement
+ * {@link Constraint} directly.
  */
 public abstract class TwoBodyConstraint implements Constraint {
     final Body bodyA;

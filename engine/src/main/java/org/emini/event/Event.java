@@ -340,6 +340,9 @@ public final class Event {
      * @param listener the listener to tell
      */
     public void check(World world, PhysicsEventListener listener) {
+        if (listener == null) {
+            throw new IllegalArgumentException("Event.check: listener must not be null");
+        }
         switch (type) {
             case CONSTRAINT_FORCE:
                 checkConstraints(world, listener);
