@@ -18,8 +18,8 @@ import org.emini.math.EMath;
  * spring's natural frequency times the timestep exceeds 2, but as a soft constraint: the
  * spring-damper is integrated implicitly over each substep, with ω = √(k/m) and
  * ζ = c/(2√(k·m)) for the effective mass m along the anchor line. That is stable at any stiffness.
- * A purely implicit step damps the oscillation numerically (an undamped spring at 60 ticks per
- * second would lose two thirds of its amplitude in 20 periods), so for springs the substep
+ * A purely implicit step damps the oscillation numerically (an undamped 10 rad/s spring at 60 ticks
+ * per second would lose two thirds of its amplitude in 20 periods), so for springs the substep
  * resolves (ω·h well below 1) the step is centred instead: the implicit midpoint rule. The biased
  * pass solves the spring over half the substep, the positions move with that midpoint velocity,
  * and the other half of the substep's impulse is applied at the start of the next substep. That
