@@ -87,7 +87,9 @@ public abstract class TwoBodyConstraint implements Constraint {
         rB0y = sb * localBX + cb * localBY;
         centreX = bodyB.getX() - bodyA.getX();
         centreY = bodyB.getY() - bodyA.getY();
-        radius = Math.max(bodyA.getShape().getBoundingRadius(), bodyB.getShape().getBoundingRadius());
+        // The moving bodies' rims: a large static body turns nothing.
+        radius = Math.max(ia != 0 ? bodyA.getShape().getBoundingRadius() : 0f,
+            ib != 0 ? bodyB.getShape().getBoundingRadius() : 0f);
         return ia != 0 || ib != 0;
     }
 
