@@ -27,7 +27,7 @@ public final class Joint extends TwoBodyConstraint {
     // Angle error at the start of the tick, as a rotation (exact for any turn of the bodies).
     private float errorCos;
     private float errorSin;
-    // Impulses of the current substep, and their sums over the tick.
+    // Impulses of the current substep, and all impulses applied in the tick.
     private float accX;
     private float accY;
     private float accAngle;
@@ -138,6 +138,10 @@ public final class Joint extends TwoBodyConstraint {
         applyLinear(step, accX, accY);
         step.applyAngularImpulse(ia, -accAngle);
         step.applyAngularImpulse(ib, accAngle);
+        // Count every impulse applied in the tick: substeps after convergence only warm start.
+        tickX += accX;
+        tickY += accY;
+        tickAngle += accAngle;
     }
 
     @Override
@@ -157,6 +161,7 @@ public final class Joint extends TwoBodyConstraint {
             float cdot = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
             float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accAngle;
             accAngle += impulse;
+            tickAngle += impulse;
             step.applyAngularImpulse(ia, -impulse);
             step.applyAngularImpulse(ib, impulse);
             change = Math.abs(impulse / axialMass) * radius;
@@ -181,17 +186,13 @@ public final class Joint extends TwoBodyConstraint {
             float py = -massScale * inv * (k11 * cy - k12 * cx) - impulseScale * accY;
             accX += px;
             accY += py;
+            tickX += px;
+            tickY += py;
             applyLinear(step, px, py);
             // The change of the anchors' relative velocity is K times the impulse.
             float dvx = Math.abs(k11 * px + k12 * py);
             float dvy = Math.abs(k12 * px + k22 * py);
             change = Math.max(change, Math.max(dvx, dvy));
-        }
-        if (!useBias) {
-            // The relax pass ends the substep: its impulses are final.
-            tickX += accX;
-            tickY += accY;
-            tickAngle += accAngle;
         }
         return change;
     }

@@ -45,7 +45,7 @@ public final class Motor implements Constraint {
     private float accX;
     private float accY;
     private float accAngular;
-    // Sums over the tick, in world axes.
+    // All impulses applied in the tick, in world axes.
     private float tickX;
     private float tickY;
     private float tickAngular;
@@ -256,8 +256,10 @@ public final class Motor implements Constraint {
             accAngular *= scale;
         }
         impulseSubstep = h;
+        // Count every impulse applied in the tick: substeps after convergence only warm start.
         if (rotational) {
             step.applyAngularImpulse(index, accAngular);
+            tickAngular += accAngular;
         } else {
             frame(step);
             applyLocal(step, impulseX(), impulseY());
@@ -279,6 +281,7 @@ public final class Motor implements Constraint {
             accAngular = clamp(old - inertia * (step.getAngularVelocity(index) - targetAngular), limit);
             float d = accAngular - old;
             step.applyAngularImpulse(index, d);
+            tickAngular += d;
             change = Math.abs(d / inertia) * radius;
         } else {
             if (mass == 0f || (speed == 0f && !orthogonal)) {
@@ -310,17 +313,6 @@ public final class Motor implements Constraint {
             applyLocal(step, dx, dy);
             change = Math.max(Math.abs(dx), Math.abs(dy)) / mass;
         }
-        if (!useBias) {
-            // The relax pass ends the substep: sum its impulse, in world axes.
-            if (rotational) {
-                tickAngular += accAngular;
-            } else {
-                float jx = impulseX();
-                float jy = impulseY();
-                tickX += frameC * jx - frameS * jy;
-                tickY += frameS * jx + frameC * jy;
-            }
-        }
         return change;
     }
 
@@ -349,9 +341,13 @@ public final class Motor implements Constraint {
         frameS = s * dc + c * ds;
     }
 
-    /** Applies an impulse given in the motor's frame. */
+    /** Applies an impulse given in the motor's frame, and counts it in world axes. */
     private void applyLocal(SolverStep step, float jx, float jy) {
-        step.applyImpulse(index, frameC * jx - frameS * jy, frameS * jx + frameC * jy, 0f, 0f);
+        float wx = frameC * jx - frameS * jy;
+        float wy = frameS * jx + frameC * jy;
+        step.applyImpulse(index, wx, wy, 0f, 0f);
+        tickX += wx;
+        tickY += wy;
     }
 
     private static float clamp(float value, float limit) {

@@ -44,7 +44,9 @@ public final class Spring extends TwoBodyConstraint {
     private float pending;
     // Fraction of the substep the biased pass solved the spring over (1/2 centred, 1 implicit).
     private float theta = 1f;
+    // The tick's impulse so far, and the part of it counted for the current substep.
     private float tick;
+    private float counted;
     private float tension;
 
     /**
@@ -208,12 +210,19 @@ public final class Spring extends TwoBodyConstraint {
         }
         acc *= substepScale(step);
         float impulse = acc + pending;
-        pending = 0f;
+        // Unless a solve this substep says otherwise, the spring keeps its last substep's impulse
+        // (substeps after dynamic iterations converged only warm start).
+        float share = isRigid() ? 1f : theta;
+        pending = acc * (1f - share) / share;
+        counted = 0f;
         arms(step);
         float len = EMath.sqrt(sepX * sepX + sepY * sepY);
         if (len < MIN_LENGTH) {
             return;
         }
+        // The tick's force counts each substep's whole impulse, both parts of a centred one.
+        counted = acc / share;
+        tick += counted;
         float f = impulse / len;
         applyLinear(step, f * sepX, f * sepY);
     }
@@ -247,16 +256,15 @@ public final class Spring extends TwoBodyConstraint {
             float impulseScale = useBias ? step.getJointImpulseScale() : 0f;
             impulse = -massScale * (cdot + bias) / k - impulseScale * acc;
             acc += impulse;
-            if (!useBias) {
-                // The relax pass ends the substep: its impulse is final.
-                tick += acc;
-            }
+            tick += impulse;
+            counted += impulse;
         } else {
             impulse = softImpulse(step, k, len, ux, uy);
             acc += impulse;
             // acc is the first part, θ of the substep's impulse; the rest waits for the next substep.
             pending = acc * (1f - theta) / theta;
-            tick += acc / theta;
+            tick += acc / theta - counted;
+            counted = acc / theta;
         }
         applyLinear(step, impulse * ux, impulse * uy);
         return Math.abs(impulse * k);

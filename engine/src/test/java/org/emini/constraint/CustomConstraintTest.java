@@ -24,6 +24,7 @@ class CustomConstraintTest {
         private float mass;
         private float impulse;
         private float impulseSubstep;
+        // Every impulse applied in the tick, for getForce().
         private float tick;
         private float force;
 
@@ -53,6 +54,7 @@ class CustomConstraintTest {
             }
             impulseSubstep = h;
             step.applyImpulse(index, 0f, impulse, 0f, 0f);
+            tick += impulse;
         }
 
         @Override
@@ -63,9 +65,7 @@ class CustomConstraintTest {
             float d = -massScale * mass * (step.getVelocityY(index) + bias) - impulseScale * impulse;
             impulse += d;
             step.applyImpulse(index, 0f, d, 0f, 0f);
-            if (!useBias) {
-                tick += impulse;
-            }
+            tick += d;
             return mass > 0f ? Math.abs(d) / mass : 0f;
         }
 
