@@ -112,8 +112,8 @@ class Schedule:
                 body.angular_velocity = a.value
 
 
-def run_scene(scene: Scene):
-    """Runs a scene; returns (trace JSON, built world)."""
+def run_scene(scene: Scene, ticks=None):
+    """Runs a scene (or only its first `ticks` ticks); returns (trace JSON, built world)."""
     built = build(scene)
     space = built.space
     snapshot = metric_classes.Snapshot(built)
@@ -124,7 +124,7 @@ def run_scene(scene: Scene):
     trace = Trace(scene, names, channels)
     schedule = Schedule(built)
     h = scene.world.timestep
-    ticks = scene.ticks
+    ticks = scene.ticks if ticks is None else min(ticks, scene.ticks)
     every = scene.sampling_ticks
     keep_lin, keep_rot = built.damping
     damped = [(b, built.specs[n].state.rotatable) for n, b in built.dynamic()] \
