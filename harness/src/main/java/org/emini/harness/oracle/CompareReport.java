@@ -14,6 +14,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * Writes the comparison: {@code compare.json} (every scene, every row) and {@code summary.md} (the
@@ -186,7 +187,23 @@ public final class CompareReport {
         md.append(summary).append("\n\n");
         md.append("## Closer to the truth\n\n");
         md.append("Every row with a reference (a closed form, or a law that holds for the scene). Errors are "
-                + "|figure − reference|; for a series, the largest over the samples.\n\n");
+                + "|figure − reference|; for a series, reduced as its figure says (largest, final or rms error).\n\n");
+        // Tally by reference first: which kind of truth each engine gets closer to.
+        Map<String, int[]> tally = new TreeMap<>();
+        for (Comparison.Scene s : scenes) {
+            for (Comparison.Row r : s.rows()) {
+                if (r.referenceSource() != null && !r.closer().equals("-")) {
+                    int[] t = tally.computeIfAbsent(r.referenceSource(), k -> new int[3]);
+                    t[r.closer().equals("engine") ? 0 : r.closer().equals("oracle") ? 1 : 2]++;
+                }
+            }
+        }
+        md.append("| reference | engine closer | pymunk closer | tie |\n|---|---:|---:|---:|\n");
+        for (Map.Entry<String, int[]> e : tally.entrySet()) {
+            md.append("| ").append(e.getKey()).append(" | ").append(e.getValue()[0]).append(" | ")
+                    .append(e.getValue()[1]).append(" | ").append(e.getValue()[2]).append(" |\n");
+        }
+        md.append("\n");
         md.append("| scene | metric | figure | reference | engine error | pymunk error | closer |\n");
         md.append("|---|---|---|---|---:|---:|---|\n");
         List<String[]> closer = new ArrayList<>();

@@ -205,4 +205,23 @@ class ComparisonTest {
         assertEquals("-", CompareReport.fmt(Double.NaN));
         assertEquals("12350", CompareReport.fmt(12345.6));
     }
+
+    @Test
+    void oracleResultsAreReadPerSceneFile(@TempDir Path dir) throws Exception {
+        Path results = dir.resolve("oracle-results.json");
+        Files.writeString(results, "{\"format\": \"emini-oracle-results\", \"version\": 1, \"scenes\": ["
+                + "{\"file\": \"/s/a.yaml\", \"scene\": \"a\", \"status\": \"ok\", \"message\": \"\","
+                + " \"unsupported\": [{\"element\": \"particles\", \"path\": \"$.particles\", \"reason\": \"r\","
+                + " \"affectsBodies\": false}], \"approximations\": [], \"trace\": \"/t/a.trace.json\"},"
+                + "{\"file\": \"/s/b.yaml\", \"scene\": \"b\", \"status\": \"skipped\", \"message\": \"why\","
+                + " \"unsupported\": [], \"approximations\": [], \"trace\": null}]}");
+        Map<Path, OracleScene> read = OracleRunner.read(results);
+        OracleScene a = read.get(Path.of("/s/a.yaml"));
+        assertTrue(a.ok());
+        assertFalse(a.incomplete());
+        assertEquals("particles", a.unsupported().get(0).element());
+        OracleScene b = read.get(Path.of("/s/b.yaml"));
+        assertFalse(b.ok());
+        assertEquals("why", b.message());
+    }
 }
