@@ -6,7 +6,8 @@ import picocli.CommandLine.Command;
 /** The harness command line: {@code validate} and {@code run} over scenario files and folders. */
 @Command(name = "harness", mixinStandardHelpOptions = true, version = "emini harness 0.1.0",
         description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
-        subcommands = {ValidateCommand.class, RunCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {ValidateCommand.class, RunCommand.class, SweepCommand.class, StabilityCommand.class,
+                DashboardCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @Override
