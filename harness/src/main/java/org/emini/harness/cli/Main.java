@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
 @Command(name = "harness", mixinStandardHelpOptions = true, version = "emini harness 0.1.0",
         description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
         subcommands = {ValidateCommand.class, RunCommand.class, CompareCommand.class, ExpandCommand.class,
-                CommandLine.HelpCommand.class})
+                SweepCommand.class, StabilityCommand.class, DashboardCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @Override
