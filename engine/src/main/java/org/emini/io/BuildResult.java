@@ -7,7 +7,9 @@ import java.util.List;
 import java.util.Map;
 
 import org.emini.dynamics.Body;
+import org.emini.dynamics.Constraint;
 import org.emini.dynamics.World;
+import org.emini.event.Event;
 import org.emini.shape.Shape;
 
 /**
@@ -20,6 +22,8 @@ public final class BuildResult {
     private final World world;
     private final Shape[] shapes;
     private final Body[] bodies;
+    private final Constraint[] constraints;
+    private final Event[] events;
     private final Map<PhyElement, Object> userData = new IdentityHashMap<PhyElement, Object>();
     private final List<UnsupportedElement> unsupported = new ArrayList<UnsupportedElement>();
     private final List<UnsupportedElement> approximations = new ArrayList<UnsupportedElement>();
@@ -29,6 +33,8 @@ public final class BuildResult {
         this.world = world;
         shapes = new Shape[document.getShapes().size()];
         bodies = new Body[document.getBodies().size()];
+        constraints = new Constraint[document.getConstraints().size()];
+        events = new Event[document.getEvents().size()];
     }
 
     /**
@@ -67,6 +73,27 @@ public final class BuildResult {
      */
     public Body getBody(int index) {
         return bodies[index];
+    }
+
+    /**
+     * The joint, spring or motor built for a constraint record.
+     *
+     * @param index the record's index in {@link PhyWorld#getConstraints()}
+     * @return the constraint, or null when the record is not built (see {@link #getUnsupported()})
+     */
+    public Constraint getConstraint(int index) {
+        return constraints[index];
+    }
+
+    /**
+     * The event built for an event record (the original's event id is its index). Events are
+     * checked only while the world has a listener ({@link World#setPhysicsEventListener}).
+     *
+     * @param index the record's index in {@link PhyWorld#getEvents()}
+     * @return the event, or null when the record is not built (see {@link #getUnsupported()})
+     */
+    public Event getEvent(int index) {
+        return events[index];
     }
 
     /**
@@ -126,6 +153,11 @@ public final class BuildResult {
         return index >= 0 && index < bodies.length ? bodies[index] : null;
     }
 
+    /** The constraint built for a record; null when not built or when the index names no record. */
+    Constraint constraintAt(int index) {
+        return index >= 0 && index < constraints.length ? constraints[index] : null;
+    }
+
     /** Why a reference yields nothing: the record is not built, or there is no such record. */
     static String missing(String what, int index, int count) {
         return "its " + what + " " + index + (index < count ? " is not built" : " does not exist");
@@ -137,6 +169,14 @@ public final class BuildResult {
 
     void setBody(int index, Body body) {
         bodies[index] = body;
+    }
+
+    void setConstraint(int index, Constraint constraint) {
+        constraints[index] = constraint;
+    }
+
+    void setEvent(int index, Event event) {
+        events[index] = event;
     }
 
     void putUserData(PhyElement element, Object data) {

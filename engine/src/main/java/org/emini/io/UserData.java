@@ -4,8 +4,9 @@ package org.emini.io;
  * The application's hook for user data, as in the original engine: while a world is built from a
  * file, each user-data string the file's version stores is handed to
  * {@link #createNewUserData(String, int)} with the kind of record it belongs to, and the returned
- * object is attached to what was built ({@link org.emini.dynamics.Body#setUserData(Object)} for
- * bodies) and kept in {@link BuildResult#getUserData(PhyElement)} for every record, built or not.
+ * object is attached to what was built ({@code setUserData} of bodies, sensor bodies and events;
+ * shapes and constraints have none) and kept in {@link BuildResult#getUserData(PhyElement)} for
+ * every record, built or not.
  * The landscape material's string is discarded, as in the original.
  */
 public interface UserData {

@@ -5,7 +5,9 @@ import java.io.InputStream;
 import java.util.List;
 
 import org.emini.dynamics.Body;
+import org.emini.dynamics.Constraint;
 import org.emini.dynamics.World;
+import org.emini.event.Event;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
@@ -22,11 +24,16 @@ import org.emini.shape.Shape;
  * <li>Bodies: position, velocity and the angle wrapped to [0, 2π] as stored; the angular velocity
  * negated (the original advances angle ← angle − ω·dt, the engine angle ← angle + ω·dt, with the
  * same rotation matrix); flags and collision layers as stored.</li>
+ * <li>Joints, springs and motors on the bodies built, anchors body-local as stored; a rotational
+ * motor's target negated, its cap (an impulse per tick in the original) divided by the timestep.</li>
+ * <li>Events with their filters and targets in the engine's units (squared speeds as speeds,
+ * angular velocity ranges negated, relative collision directions turned by π); set a listener on
+ * the world to receive them.</li>
  * <li>World record: gravity and the two damping fractions. Timestep and iterations keep the
  * engine's defaults (the file stores none).</li>
  * </ul>
- * Records whose engine feature is not available (multishapes, landscape segments, joints,
- * springs, motors, scripts, events, particle emitters) and unusable records are listed in
+ * Records whose engine feature is not available (multishapes, landscape segments, scripts,
+ * particle emitters), records the engine refuses and unusable records are listed in
  * {@link BuildResult#getUnsupported()}; records built differently from the original in
  * {@link BuildResult#getApproximations()}. Nothing is dropped silently.
  */
@@ -116,7 +123,15 @@ public final class WorldBuilder {
                 r.unsupported(UnsupportedElement.Kind.LANDSCAPE_SEGMENT, i, "the engine has no landscape yet");
             }
         }
-        buildConstraints(document, otherData, r);
+        List<PhyConstraint> constraints = document.getConstraints();
+        for (int i = 0; i < constraints.size(); i++) {
+            userData(r, constraints.get(i), otherData, UserData.TYPE_CONSTRAINT);
+            Constraint c = ConstraintMapping.build(constraints.get(i), i, r, world.getTimestep());
+            if (c != null) {
+                world.addConstraint(c);
+                r.setConstraint(i, c);
+            }
+        }
         for (int i = 0; i < document.getScripts().size(); i++) {
             r.unsupported(UnsupportedElement.Kind.SCRIPT, i, "the engine has no scripts yet");
         }
@@ -124,12 +139,7 @@ public final class WorldBuilder {
             r.unsupported(UnsupportedElement.Kind.SCRIPT_BINDING, i, "the engine has no scripts yet");
         }
         for (int i = 0; i < document.getEvents().size(); i++) {
-            PhyEvent e = document.getEvents().get(i);
-            userData(r, e, otherData, UserData.TYPE_EVENT);
-            if (e.getSensor() != null) {
-                userData(r, e.getSensor(), shapeData, UserData.TYPE_BODY);
-            }
-            r.unsupported(UnsupportedElement.Kind.EVENT, i, "the engine has no events yet");
+            buildEvent(document.getEvents().get(i), i, r, otherData, shapeData);
         }
         for (int i = 0; i < document.getParticleEmitters().size(); i++) {
             userData(r, document.getParticleEmitters().get(i), otherData, UserData.TYPE_PARTICLE);
@@ -236,6 +246,13 @@ public final class WorldBuilder {
                     BuildResult.missing("shape", b.getShapeIndex(), r.getDocument().getShapes().size()));
             return;
         }
+        Body body = newBody(b, shape, UnsupportedElement.Kind.BODY, index, r);
+        r.getWorld().addBody(body);
+        r.setBody(index, body);
+    }
+
+    /** A body with the record's state (also an event's sensor body, which stays out of the world). */
+    private static Body newBody(PhyBody b, Shape shape, UnsupportedElement.Kind kind, int index, BuildResult r) {
         Body body = new Body(b.getPosition().getX(), b.getPosition().getY(), shape, b.isDynamic());
         body.setRotatable(b.canRotate());
         body.setInteracting(b.isInteracting());
@@ -248,24 +265,25 @@ public final class WorldBuilder {
             body.setVelocity(b.getVelocity().getX(), b.getVelocity().getY());
             body.setAngularVelocity(omega);
         } else if (!b.getVelocity().equals(PhyVector.ZERO) || omega != 0f) {
-            r.approximated(UnsupportedElement.Kind.BODY, index, "a static body with a stored velocity; "
-                    + "the engine keeps static bodies at rest");
+            r.approximated(kind, index, "a static body with a stored velocity; the engine keeps static bodies at rest");
         }
         body.setUserData(r.getUserData(b));
-        r.getWorld().addBody(body);
-        r.setBody(index, body);
+        return body;
     }
 
-    private void buildConstraints(PhyWorld document, boolean otherData, BuildResult r) {
-        List<PhyConstraint> constraints = document.getConstraints();
-        for (int i = 0; i < constraints.size(); i++) {
-            PhyConstraint c = constraints.get(i);
-            userData(r, c, otherData, UserData.TYPE_CONSTRAINT);
-            UnsupportedElement.Kind kind = c.getType() == PhyConstraint.TYPE_JOINT ? UnsupportedElement.Kind.JOINT
-                    : c.getType() == PhyConstraint.TYPE_SPRING ? UnsupportedElement.Kind.SPRING
-                    : UnsupportedElement.Kind.MOTOR;
-            r.unsupported(kind, i, "the engine has no " + kind.name().toLowerCase(java.util.Locale.ROOT)
-                    + "s yet");
+    private void buildEvent(PhyEvent e, int index, BuildResult r, boolean otherData, boolean shapeData) {
+        userData(r, e, otherData, UserData.TYPE_EVENT);
+        Body sensor = null;
+        if (e.getSensor() != null) {
+            userData(r, e.getSensor(), shapeData, UserData.TYPE_BODY);
+            Shape shape = r.shapeAt(e.getSensor().getShapeIndex());
+            sensor = shape == null ? null : newBody(e.getSensor(), shape, UnsupportedElement.Kind.EVENT, index, r);
+        }
+        Event event = EventMapping.build(e, index, r, sensor, r.getWorld().getTimestep());
+        if (event != null) {
+            event.setUserData(r.getUserData(e));
+            r.getWorld().addEvent(event);
+            r.setEvent(index, event);
         }
     }
 

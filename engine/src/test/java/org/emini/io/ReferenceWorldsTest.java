@@ -214,10 +214,20 @@ class ReferenceWorldsTest {
         assertEquals(doc.getBodies().size(), built + r.getUnsupportedCount(UnsupportedElement.Kind.BODY));
         int segments = doc.getLandscape() == null ? 0 : doc.getLandscape().getSegments().size();
         assertEquals(segments, r.getUnsupportedCount(UnsupportedElement.Kind.LANDSCAPE_SEGMENT));
-        assertEquals(doc.getConstraints().size(), r.getUnsupportedCount(UnsupportedElement.Kind.JOINT)
+        int constraints = 0;
+        for (int i = 0; i < doc.getConstraints().size(); i++) {
+            constraints += r.getConstraint(i) != null ? 1 : 0;
+        }
+        assertEquals(doc.getConstraints().size(), constraints + r.getUnsupportedCount(UnsupportedElement.Kind.JOINT)
                 + r.getUnsupportedCount(UnsupportedElement.Kind.SPRING)
                 + r.getUnsupportedCount(UnsupportedElement.Kind.MOTOR));
-        assertEquals(doc.getEvents().size(), r.getUnsupportedCount(UnsupportedElement.Kind.EVENT));
+        assertEquals(constraints, r.getWorld().getConstraintCount());
+        int events = 0;
+        for (int i = 0; i < doc.getEvents().size(); i++) {
+            events += r.getEvent(i) != null ? 1 : 0;
+        }
+        assertEquals(doc.getEvents().size(), events + r.getUnsupportedCount(UnsupportedElement.Kind.EVENT));
+        assertEquals(events, r.getWorld().getEventCount());
         assertEquals(doc.getParticleEmitters().size(), r.getUnsupportedCount(UnsupportedElement.Kind.PARTICLE_EMITTER));
         assertFalse(r.getUnsupported().stream().anyMatch(e -> e.getReason().isEmpty()));
     }

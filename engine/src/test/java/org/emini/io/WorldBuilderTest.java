@@ -272,19 +272,21 @@ class WorldBuilderTest {
         assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.MULTI_SHAPE));
         assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.BODY));
         assertEquals(2, r.getUnsupportedCount(UnsupportedElement.Kind.LANDSCAPE_SEGMENT));
-        assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.JOINT));
-        assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.SPRING));
-        assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.MOTOR));
+        assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.JOINT), "a joint of body 0 with itself");
+        assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.SPRING), "a spring of body 0 with itself");
+        assertEquals(0, r.getUnsupportedCount(UnsupportedElement.Kind.MOTOR));
         assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.SCRIPT));
         assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.SCRIPT_BINDING));
-        assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.EVENT));
+        assertEquals(0, r.getUnsupportedCount(UnsupportedElement.Kind.EVENT));
         assertEquals(1, r.getUnsupportedCount(UnsupportedElement.Kind.PARTICLE_EMITTER));
-        assertEquals(11, r.getUnsupported().size());
+        assertEquals(9, r.getUnsupported().size());
         assertEquals("body 1: its shape 1 is not built", r.getUnsupported().get(1).toString());
         assertEquals("landscape segment 1: the engine has no landscape yet", r.getUnsupported().get(3).toString());
         assertEquals(1, r.getWorld().getBodyCount());
         assertNull(r.getBody(1));
-        assertTrue(r.toString().contains("11 unsupported"));
+        assertEquals(1, r.getWorld().getConstraintCount());
+        assertEquals(1, r.getWorld().getEventCount());
+        assertTrue(r.toString().contains("9 unsupported"));
     }
 
     @Test
