@@ -1,5 +1,6 @@
 package org.emini.io;
 
+import static org.emini.io.Squares.square;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -18,11 +19,6 @@ import org.junit.jupiter.api.Test;
 
 /** Joints, springs, motors and events of a world file: the original's conventions mapped. */
 class ConstraintAndEventMappingTest {
-    private static PhyShape square(float half) {
-        return new PhyShape(PhyVector.of(half, half), PhyVector.of(half, -half), PhyVector.of(-half, -half),
-                PhyVector.of(-half, half));
-    }
-
     /** A static ground box at y = 100 (top face at y = 80) and a dynamic 20 px box at (x, y). */
     private static PhyWorld ground(float x, float y) {
         PhyWorld w = new PhyWorld();

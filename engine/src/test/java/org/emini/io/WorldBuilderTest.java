@@ -1,5 +1,6 @@
 package org.emini.io;
 
+import static org.emini.io.Squares.square;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -20,11 +21,6 @@ import org.junit.jupiter.api.Test;
 
 /** Building an engine world from a document: the original's conventions mapped, nothing dropped. */
 class WorldBuilderTest {
-    private static PhyShape square(float half) {
-        return new PhyShape(PhyVector.of(half, half), PhyVector.of(half, -half), PhyVector.of(-half, -half),
-                PhyVector.of(-half, half));
-    }
-
     private static PhyWorld oneBody(PhyShape shape, PhyBody body) {
         PhyWorld w = new PhyWorld();
         w.getShapes().add(shape);
