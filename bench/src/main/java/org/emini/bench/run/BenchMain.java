@@ -1,0 +1,144 @@
+package org.emini.bench.run;
+
+import com.google.gson.GsonBuilder;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.time.temporal.ChronoUnit;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.emini.bench.engine.Engines;
+import org.emini.bench.report.BenchReport;
+import org.emini.bench.report.Charts;
+import org.emini.bench.report.HtmlPage;
+import org.emini.bench.scene.BenchScenes;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code ./emini bench}: runs the benchmark scenes in every engine with JMH, then the rain scaling
+ * series, and publishes {@code bench.json}, {@code index.html} and the plots under the reports folder.
+ */
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = "Benchmarks Emini against dyn4j, JBox2D and libGDX's Box2D on the scenes of scenarios/bench "
+            + "and publishes JSON, an HTML page and plots under reports/bench.")
+public final class BenchMain implements Callable<Integer> {
+    @Option(names = "--quick", description = "CI-sized run: short iterations in this JVM, short preroll, three scaling points.")
+    boolean quick;
+
+    @Option(names = "--reports", paramLabel = "DIR", description = "Output folder (default: reports/bench).")
+    Path reports;
+
+    @Option(names = "--scenes", split = ",", paramLabel = "ID", description = "Only these table scenes (ids like bench/pyramid-20).")
+    List<String> onlyScenes;
+
+    @Option(names = "--engines", split = ",", paramLabel = "ID", description = "Only these engines (default: all).")
+    List<String> engines;
+
+    @Option(names = "--scaling", split = ",", paramLabel = "N", description = "Rain body counts of the scaling run (default: the mode's).")
+    List<Integer> scaling;
+
+    @Option(names = "--no-scaling", description = "Skip the scaling run.")
+    boolean noScaling;
+
+    /** Runs the command line and exits with its status. */
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new BenchMain()).execute(args));
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        System.setProperty("java.awt.headless", "true");
+        long start = System.nanoTime();
+        BenchScenes scenes = BenchScenes.open();
+        BenchPlan.Mode mode = quick ? BenchPlan.QUICK : BenchPlan.FULL;
+        Path out = reports != null ? reports : scenes.root().resolve("reports").resolve("bench");
+        Path checks = out.resolve("checks");
+        Path jmhLogs = out.resolve("jmh");
+        Files.createDirectories(checks);
+        Files.createDirectories(jmhLogs);
+        List<String> engineIds = engines != null ? engines : Engines.ALL;
+        Map<String, Object> machine = Machine.describe();
+        System.out.printf(Locale.ROOT, "bench (%s) on %s, %s cores, load average %.1f; reports in %s%n",
+            mode.quick() ? "quick" : "full", machine.get("cpu"), machine.get("cores"), Machine.loadAverage(), out);
+        BenchRunner runner = new BenchRunner(scenes, mode, checks, jmhLogs);
+        boolean failed = false;
+
+        List<BenchReport.SceneEntry> table = new ArrayList<>();
+        for (BenchPlan.Scene s : BenchPlan.SCENES) {
+            if (onlyScenes != null && !onlyScenes.contains(s.id())) {
+                continue;
+            }
+            if (scenes.file(s.id()) == null) {
+                String why = "no scene file yet; waits for " + s.needs();
+                System.out.printf("%-28s pending: %s%n", s.id(), why);
+                table.add(new BenchReport.SceneEntry(s.id(), s.title(), "pending", why, List.of()));
+                continue;
+            }
+            List<Measurement> results = new ArrayList<>();
+            for (String e : engineIds) {
+                Measurement m = runner.measure(s.id(), e);
+                failed |= "error".equals(m.status());
+                print(m);
+                results.add(m);
+            }
+            table.add(new BenchReport.SceneEntry(s.id(), s.title(), "ran", "", results));
+        }
+
+        List<Measurement> scalingResults = new ArrayList<>();
+        if (!noScaling) {
+            List<Integer> counts = scaling != null ? scaling : quick ? BenchPlan.SCALING_QUICK : BenchPlan.SCALING;
+            for (int n : counts) {
+                for (String e : engineIds) {
+                    Measurement m = runner.measure("bench/rain-" + n, e);
+                    failed |= "error".equals(m.status());
+                    print(m);
+                    scalingResults.add(m);
+                }
+            }
+        }
+
+        Map<String, Object> jmh = new LinkedHashMap<>();
+        jmh.put("version", "1.37");
+        jmh.put("mode", "AverageTime, one tick per operation");
+        jmh.put("forks", mode.forks());
+        jmh.put("warmup", mode.warmups() + " x " + mode.warmupMillis() + " ms");
+        jmh.put("measurement", mode.iterations() + " x " + mode.iterationMillis() + " ms");
+        jmh.put("preroll", mode.preroll() < 0 ? "the scene's run duration" : mode.preroll() + " ticks");
+        jmh.put("profiler", "gc");
+        BenchReport report = new BenchReport("emini-bench", 1, Instant.now().truncatedTo(ChronoUnit.SECONDS).toString(),
+            mode.quick() ? "quick" : "full", jmh, machine, Machine.loadAverage(), (System.nanoTime() - start) / 1e9,
+            table, scalingResults, PymunkBench.run(scenes, mode, out));
+        write(out, report, engineIds);
+        System.out.printf(Locale.ROOT, "wrote %s and %s (%.0f s)%n", out.resolve("bench.json"), out.resolve("index.html"), report.seconds());
+        return failed ? 1 : 0;
+    }
+
+    /** Writes bench.json, the plots and index.html. */
+    static void write(Path out, BenchReport report, List<String> engineIds) throws IOException {
+        Files.createDirectories(out);
+        Files.writeString(out.resolve("bench.json"),
+            new GsonBuilder().setPrettyPrinting().serializeNulls().serializeSpecialFloatingPointValues().create().toJson(report),
+            StandardCharsets.UTF_8);
+        String scenesChart = Charts.sceneTimes(out, report.scenes(), engineIds);
+        String scalingChart = Charts.scaling(out, report.scaling(), engineIds);
+        Files.writeString(out.resolve("index.html"), HtmlPage.render(report, engineIds, scenesChart, scalingChart), StandardCharsets.UTF_8);
+    }
+
+    private static void print(Measurement m) {
+        if (!"ok".equals(m.status())) {
+            System.out.printf("%-28s %-10s %s: %s%n", m.scene(), m.engine(), m.status(), m.message());
+            return;
+        }
+        System.out.printf(Locale.ROOT, "%-28s %-10s %9.3f ms/tick cpu  %9.3f wall  %8.2f us/body  %10.0f B/tick  %s%n",
+            m.scene(), m.engine(), m.cpuMsPerTick() == null ? Double.NaN : m.cpuMsPerTick(), m.msPerTick(), m.usPerBody(),
+            m.threadBytesPerTick() == null ? Double.NaN : m.threadBytesPerTick(), m.verdict());
+    }
+}
