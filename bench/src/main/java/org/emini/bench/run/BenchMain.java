@@ -39,7 +39,8 @@ public final class BenchMain implements Callable<Integer> {
     @Option(names = "--scenes", split = ",", paramLabel = "ID", description = "Only these table scenes (ids like bench/pyramid-20).")
     List<String> onlyScenes;
 
-    @Option(names = "--engines", split = ",", paramLabel = "ID", description = "Only these engines (default: all).")
+    @Option(names = "--engines", split = ",", paramLabel = "ID",
+            description = "Only these engines (default: all): emini, dyn4j, jbox2d, gdx-box2d, pymunk.")
     List<String> engines;
 
     @Option(names = "--scaling", split = ",", paramLabel = "N", description = "Rain body counts of the scaling run (default: the mode's).")
@@ -64,7 +65,8 @@ public final class BenchMain implements Callable<Integer> {
         Path jmhLogs = out.resolve("jmh");
         Files.createDirectories(checks);
         Files.createDirectories(jmhLogs);
-        List<String> engineIds = engines != null ? engines : Engines.ALL;
+        List<String> engineIds = new ArrayList<>(engines != null ? engines : Engines.ALL);
+        engineIds.remove("pymunk");
         Map<String, Object> machine = Machine.describe();
         System.out.printf(Locale.ROOT, "bench (%s) on %s, %s cores, load average %.1f; reports in %s%n",
             mode.quick() ? "quick" : "full", machine.get("cpu"), machine.get("cores"), Machine.loadAverage(), out);
@@ -113,10 +115,43 @@ public final class BenchMain implements Callable<Integer> {
         jmh.put("measurement", mode.iterations() + " x " + mode.iterationMillis() + " ms");
         jmh.put("preroll", mode.preroll() < 0 ? "the scene's run duration" : mode.preroll() + " ticks");
         jmh.put("profiler", "gc");
+        // pymunk (through the oracle) on the scenes that ran, at the same scaling points.
+        List<String> pyScenes = new ArrayList<>();
+        if (engines == null || engines.contains("pymunk")) {
+            for (BenchReport.SceneEntry s : table) {
+                if ("ran".equals(s.status())) {
+                    pyScenes.add(s.id());
+                }
+            }
+            for (Measurement m : scalingResults) {
+                if (!pyScenes.contains(m.scene())) {
+                    pyScenes.add(m.scene());
+                }
+            }
+        }
+        PymunkBench.Outcome py = PymunkBench.run(scenes, mode, out, pyScenes);
+        System.out.println("pymunk: " + py.status() + ": " + py.message());
+        List<String> shown = new ArrayList<>(engineIds);
+        if (!py.measurements().isEmpty()) {
+            shown.remove("pymunk");
+            shown.add("pymunk");
+            List<BenchReport.SceneEntry> merged = new ArrayList<>();
+            for (BenchReport.SceneEntry s : table) {
+                List<Measurement> rs = new ArrayList<>(s.results());
+                py.measurements().stream().filter(m -> m.scene().equals(s.id())).forEach(rs::add);
+                merged.add(new BenchReport.SceneEntry(s.id(), s.title(), s.status(), s.message(), rs));
+            }
+            table = merged;
+            for (Measurement m : py.measurements()) {
+                if (m.scene().startsWith("bench/rain-") && scalingResults.stream().anyMatch(x -> x.scene().equals(m.scene()))) {
+                    scalingResults.add(m);
+                }
+            }
+        }
         BenchReport report = new BenchReport("emini-bench", 1, Instant.now().truncatedTo(ChronoUnit.SECONDS).toString(),
             mode.quick() ? "quick" : "full", jmh, machine, Machine.loadAverage(), (System.nanoTime() - start) / 1e9,
-            table, scalingResults, PymunkBench.run(scenes, mode, out));
-        write(out, report, engineIds);
+            table, scalingResults, py.summary());
+        write(out, report, shown);
         System.out.printf(Locale.ROOT, "wrote %s and %s (%.0f s)%n", out.resolve("bench.json"), out.resolve("index.html"), report.seconds());
         return failed ? 1 : 0;
     }
