@@ -17,6 +17,7 @@ import org.emini.bench.engine.Engines;
 import org.emini.bench.report.BenchReport;
 import org.emini.bench.report.Charts;
 import org.emini.bench.report.HtmlPage;
+import org.emini.bench.report.MarkdownTables;
 import org.emini.bench.scene.BenchScenes;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -49,6 +50,9 @@ public final class BenchMain implements Callable<Integer> {
     @Option(names = "--no-scaling", description = "Skip the scaling run.")
     boolean noScaling;
 
+    @Option(names = "--render", description = "Run nothing: write the page, plots and RESULTS.md again from the reports folder's bench.json.")
+    boolean render;
+
     /** Runs the command line and exits with its status. */
     public static void main(String[] args) {
         System.exit(new CommandLine(new BenchMain()).execute(args));
@@ -61,6 +65,21 @@ public final class BenchMain implements Callable<Integer> {
         BenchScenes scenes = BenchScenes.open();
         BenchPlan.Mode mode = quick ? BenchPlan.QUICK : BenchPlan.FULL;
         Path out = reports != null ? reports : scenes.root().resolve("reports").resolve("bench");
+        if (render) {
+            BenchReport old = new GsonBuilder().serializeSpecialFloatingPointValues().create()
+                .fromJson(Files.readString(out.resolve("bench.json"), StandardCharsets.UTF_8), BenchReport.class);
+            List<String> shown = new ArrayList<>(Engines.ALL);
+            for (BenchReport.SceneEntry s : old.scenes()) {
+                for (Measurement m : s.results()) {
+                    if (!shown.contains(m.engine())) {
+                        shown.add(m.engine());
+                    }
+                }
+            }
+            write(out, old, shown);
+            System.out.println("wrote " + out.resolve("index.html"));
+            return 0;
+        }
         Path checks = out.resolve("checks");
         Path jmhLogs = out.resolve("jmh");
         Files.createDirectories(checks);
@@ -156,7 +175,7 @@ public final class BenchMain implements Callable<Integer> {
         return failed ? 1 : 0;
     }
 
-    /** Writes bench.json, the plots and index.html. */
+    /** Writes bench.json, the plots, index.html and RESULTS.md (the tables in Markdown). */
     static void write(Path out, BenchReport report, List<String> engineIds) throws IOException {
         Files.createDirectories(out);
         Files.writeString(out.resolve("bench.json"),
@@ -165,6 +184,7 @@ public final class BenchMain implements Callable<Integer> {
         String scenesChart = Charts.sceneTimes(out, report.scenes(), engineIds);
         String scalingChart = Charts.scaling(out, report.scaling(), engineIds);
         Files.writeString(out.resolve("index.html"), HtmlPage.render(report, engineIds, scenesChart, scalingChart), StandardCharsets.UTF_8);
+        Files.writeString(out.resolve("RESULTS.md"), MarkdownTables.render(report, engineIds), StandardCharsets.UTF_8);
     }
 
     private static void print(Measurement m) {
