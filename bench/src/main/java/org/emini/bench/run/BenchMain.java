@@ -53,6 +53,9 @@ public final class BenchMain implements Callable<Integer> {
     @Option(names = "--render", description = "Run nothing: write the page, plots and RESULTS.md again from the reports folder's bench.json.")
     boolean render;
 
+    @Option(names = "--add-pymunk", description = "Run only pymunk on the scenes of the reports folder's bench.json and add it to the report.")
+    boolean addPymunk;
+
     /** Runs the command line and exits with its status. */
     public static void main(String[] args) {
         System.exit(new CommandLine(new BenchMain()).execute(args));
@@ -65,10 +68,28 @@ public final class BenchMain implements Callable<Integer> {
         BenchScenes scenes = BenchScenes.open();
         BenchPlan.Mode mode = quick ? BenchPlan.QUICK : BenchPlan.FULL;
         Path out = reports != null ? reports : scenes.root().resolve("reports").resolve("bench");
-        if (render) {
+        if (render || addPymunk) {
             BenchReport old = new GsonBuilder().serializeSpecialFloatingPointValues().create()
                 .fromJson(Files.readString(out.resolve("bench.json"), StandardCharsets.UTF_8), BenchReport.class);
             List<String> shown = new ArrayList<>(Engines.ALL);
+            if (addPymunk) {
+                List<BenchReport.SceneEntry> table = new ArrayList<>();
+                for (BenchReport.SceneEntry s : old.scenes()) {
+                    List<Measurement> rs = new ArrayList<>(s.results());
+                    rs.removeIf(m -> "pymunk".equals(m.engine()));
+                    table.add(new BenchReport.SceneEntry(s.id(), s.title(), s.status(), s.message(), rs));
+                }
+                List<Measurement> scal = new ArrayList<>(old.scaling());
+                scal.removeIf(m -> "pymunk".equals(m.engine()));
+                PymunkBench.Outcome py = PymunkBench.run(scenes, "quick".equals(old.mode()) ? BenchPlan.QUICK : BenchPlan.FULL, out,
+                    pymunkScenes(table, scal));
+                System.out.println("pymunk: " + py.status() + ": " + py.message());
+                old = new BenchReport(old.format(), old.version(), old.generated(), old.mode(), old.jmh(), old.machine(),
+                    old.loadAverageEnd(), old.seconds(), withPymunk(table, py), scalingWithPymunk(scal, py), py.summary());
+                Files.writeString(out.resolve("bench.json"),
+                    new GsonBuilder().setPrettyPrinting().serializeNulls().serializeSpecialFloatingPointValues().create().toJson(old),
+                    StandardCharsets.UTF_8);
+            }
             for (BenchReport.SceneEntry s : old.scenes()) {
                 for (Measurement m : s.results()) {
                     if (!shown.contains(m.engine())) {
@@ -135,37 +156,15 @@ public final class BenchMain implements Callable<Integer> {
         jmh.put("preroll", mode.preroll() < 0 ? "the scene's run duration" : mode.preroll() + " ticks");
         jmh.put("profiler", "gc");
         // pymunk (through the oracle) on the scenes that ran, at the same scaling points.
-        List<String> pyScenes = new ArrayList<>();
-        if (engines == null || engines.contains("pymunk")) {
-            for (BenchReport.SceneEntry s : table) {
-                if ("ran".equals(s.status())) {
-                    pyScenes.add(s.id());
-                }
-            }
-            for (Measurement m : scalingResults) {
-                if (!pyScenes.contains(m.scene())) {
-                    pyScenes.add(m.scene());
-                }
-            }
-        }
-        PymunkBench.Outcome py = PymunkBench.run(scenes, mode, out, pyScenes);
+        boolean wantPymunk = engines == null || engines.contains("pymunk");
+        PymunkBench.Outcome py = PymunkBench.run(scenes, mode, out,
+            wantPymunk ? pymunkScenes(table, scalingResults) : List.of());
         System.out.println("pymunk: " + py.status() + ": " + py.message());
         List<String> shown = new ArrayList<>(engineIds);
         if (!py.measurements().isEmpty()) {
-            shown.remove("pymunk");
             shown.add("pymunk");
-            List<BenchReport.SceneEntry> merged = new ArrayList<>();
-            for (BenchReport.SceneEntry s : table) {
-                List<Measurement> rs = new ArrayList<>(s.results());
-                py.measurements().stream().filter(m -> m.scene().equals(s.id())).forEach(rs::add);
-                merged.add(new BenchReport.SceneEntry(s.id(), s.title(), s.status(), s.message(), rs));
-            }
-            table = merged;
-            for (Measurement m : py.measurements()) {
-                if (m.scene().startsWith("bench/rain-") && scalingResults.stream().anyMatch(x -> x.scene().equals(m.scene()))) {
-                    scalingResults.add(m);
-                }
-            }
+            table = withPymunk(table, py);
+            scalingResults = scalingWithPymunk(scalingResults, py);
         }
         BenchReport report = new BenchReport("emini-bench", 1, Instant.now().truncatedTo(ChronoUnit.SECONDS).toString(),
             mode.quick() ? "quick" : "full", jmh, machine, Machine.loadAverage(), (System.nanoTime() - start) / 1e9,
@@ -173,6 +172,48 @@ public final class BenchMain implements Callable<Integer> {
         write(out, report, shown);
         System.out.printf(Locale.ROOT, "wrote %s and %s (%.0f s)%n", out.resolve("bench.json"), out.resolve("index.html"), report.seconds());
         return failed ? 1 : 0;
+    }
+
+    /** The scenes pymunk is timed on: those of the table that ran, and the scaling points. */
+    private static List<String> pymunkScenes(List<BenchReport.SceneEntry> table, List<Measurement> scaling) {
+        List<String> ids = new ArrayList<>();
+        for (BenchReport.SceneEntry s : table) {
+            if ("ran".equals(s.status())) {
+                ids.add(s.id());
+            }
+        }
+        for (Measurement m : scaling) {
+            if (!ids.contains(m.scene())) {
+                ids.add(m.scene());
+            }
+        }
+        return ids;
+    }
+
+    /** The table with pymunk's measurements added to their scenes. */
+    private static List<BenchReport.SceneEntry> withPymunk(List<BenchReport.SceneEntry> table, PymunkBench.Outcome py) {
+        List<BenchReport.SceneEntry> merged = new ArrayList<>();
+        for (BenchReport.SceneEntry s : table) {
+            List<Measurement> rs = new ArrayList<>(s.results());
+            for (Measurement m : py.measurements()) {
+                if (m.scene().equals(s.id())) {
+                    rs.add(m);
+                }
+            }
+            merged.add(new BenchReport.SceneEntry(s.id(), s.title(), s.status(), s.message(), rs));
+        }
+        return merged;
+    }
+
+    /** The scaling series with pymunk's measurements of its scenes added. */
+    private static List<Measurement> scalingWithPymunk(List<Measurement> scaling, PymunkBench.Outcome py) {
+        List<Measurement> out = new ArrayList<>(scaling);
+        for (Measurement m : py.measurements()) {
+            if (scaling.stream().anyMatch(x -> x.scene().equals(m.scene()))) {
+                out.add(m);
+            }
+        }
+        return out;
     }
 
     /** Writes bench.json, the plots, index.html and RESULTS.md (the tables in Markdown). */
