@@ -208,7 +208,7 @@ public final class HtmlPage {
     }
 
     private static String cls(String status) {
-        return "unsupported".equals(status) ? "muted" : "error";
+        return "unsupported".equals(status) || "skipped".equals(status) ? "muted" : "error";
     }
 
     private static String num(Object o, String f) {

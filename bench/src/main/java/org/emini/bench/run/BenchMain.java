@@ -50,6 +50,13 @@ public final class BenchMain implements Callable<Integer> {
     @Option(names = "--no-scaling", description = "Skip the scaling run.")
     boolean noScaling;
 
+    @Option(names = "--resume", description = "Reuse the results a previous run kept in the reports folder (measurements/, or finished JMH logs); run only what is missing.")
+    boolean resume;
+
+    @Option(names = "--scaling-cap", split = ",", paramLabel = "ENGINE=N",
+            description = "Skip scaling points above N bodies for an engine (e.g. dyn4j=5000 where its preroll would take too long).")
+    Map<String, Integer> scalingCap;
+
     @Option(names = "--render", description = "Run nothing: write the page, plots and RESULTS.md again from the reports folder's bench.json.")
     boolean render;
 
@@ -126,7 +133,7 @@ public final class BenchMain implements Callable<Integer> {
             }
             List<Measurement> results = new ArrayList<>();
             for (String e : engineIds) {
-                Measurement m = runner.measure(s.id(), e);
+                Measurement m = runner.measure(s.id(), e, resume);
                 failed |= "error".equals(m.status());
                 print(m);
                 results.add(m);
@@ -139,7 +146,14 @@ public final class BenchMain implements Callable<Integer> {
             List<Integer> counts = scaling != null ? scaling : quick ? BenchPlan.SCALING_QUICK : BenchPlan.SCALING;
             for (int n : counts) {
                 for (String e : engineIds) {
-                    Measurement m = runner.measure("bench/rain-" + n, e);
+                    if (scalingCap != null && scalingCap.containsKey(e) && n > scalingCap.get(e)) {
+                        Measurement skip = Measurement.notRun("bench/rain-" + n, e, "skipped",
+                            "above --scaling-cap " + e + "=" + scalingCap.get(e));
+                        print(skip);
+                        scalingResults.add(skip);
+                        continue;
+                    }
+                    Measurement m = runner.measure("bench/rain-" + n, e, resume);
                     failed |= "error".equals(m.status());
                     print(m);
                     scalingResults.add(m);
