@@ -60,9 +60,14 @@ final class PolygonCollider {
 
         float sepA = maxSeparation(ax, ay, anx, any, na, bx, by, nb);
         int edgeA = foundEdge;
+        // A separating face of A already settles it: B's faces need not be tested.
+        if (sepA > speculativeDistance) {
+            out.pointCount = 0;
+            return;
+        }
         float sepB = maxSeparation(bx, by, bnx, bny, nb, ax, ay, na);
         int edgeB = foundEdge;
-        if (sepA > speculativeDistance || sepB > speculativeDistance) {
+        if (sepB > speculativeDistance) {
             out.pointCount = 0;
             return;
         }

@@ -675,7 +675,7 @@ public final class World {
                 for (int c = 0; c < cn; c++) {
                     cs[c].solve(step, true);
                 }
-                contactSolver.solve(sb, true, invH, maxPush, slop);
+                contactSolver.solve(sb, true, invH, maxPush, slop, false);
             }
             sb.integratePositions(hh);
             if (!converged) {
@@ -683,7 +683,7 @@ public final class World {
                 for (int c = 0; c < cn; c++) {
                     change = Math.max(change, cs[c].solve(step, false));
                 }
-                contactSolver.solve(sb, false, invH, maxPush, slop);
+                contactSolver.solve(sb, false, invH, maxPush, slop, dynamicIterations);
                 change = Math.max(change, contactSolver.lastRelaxChange);
                 used++;
                 converged = dynamicIterations && change < tolerance;
