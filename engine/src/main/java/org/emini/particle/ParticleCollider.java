@@ -6,25 +6,27 @@ import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 
 /**
- * Bounces particles off the bodies of a {@link BodyGrid}.
+ * Bounces particles off the bodies and landscape segments of an {@link ObstacleGrid}.
  *
  * <p>Each particle's motion of the tick is a segment, tested as a whole so a fast particle cannot
  * pass through a thin wall: against a polygon by clipping it to the face half-planes, against a
- * circle by solving for where it meets the rim. A moving body is tested in its own frame, the
- * segment's start taken against the body's pose at the start of the tick and its end against the
- * pose at the end, so a body that sweeps over a particle meets it on the face that swept it. The
- * earliest hit among all bodies wins; the particle is put on the surface there (a hair outside, at
- * the end-of-tick pose), the normal part of its velocity relative to the surface is reflected and
- * scaled by the elasticity, the tangential part kept, and it moves on for the rest of the tick from
- * there, up to {@link #MAX_HITS} times; after the last it stays on the surface.
+ * circle by solving for where it meets the rim, against a landscape segment (from either side) by
+ * intersecting the two. A moving body is tested in its own frame, the segment's start taken against
+ * the body's pose at the start of the tick and its end against the pose at the end, so a body that
+ * sweeps over a particle meets it on the face that swept it. The earliest hit wins; the particle is
+ * put on the surface there (a hair outside, at the end-of-tick pose), the normal part of its
+ * velocity relative to the surface is reflected and scaled by the elasticity, the tangential part
+ * kept, and it moves on for the rest of the tick from there, up to {@link #MAX_HITS} times; after
+ * the last it stays on the surface.
  *
  * <p>A bounce slower than one tick of gravity gives is a rest: the normal speed is dropped and the
  * rest of the tick slides along the surface, so resting particles neither jitter nor cost repeated
  * bounces. A particle that starts inside a body (emitted inside it, a body moved over it, or
  * squeezed where a dynamic body overlaps another) meets it at once, on the face nearest to it
- * (radially on a circle), as the original pushed particles out along the shallowest axis. A
- * particle left on a surface after its last bounce is finally moved out of any static body, so
- * walls hold even where a dynamic body presses into them.
+ * (radially on a circle), as the original pushed particles out along the shallowest axis. Static
+ * geometry wins over dynamic: a particle moved onto a body's surface never jumps across a landscape
+ * segment on the way, and one left on a surface after its last bounce is finally moved out of any
+ * static body, so walls hold even where a dynamic body presses into them.
  */
 final class ParticleCollider {
     /** Bounces resolved per particle and tick before it is left on the surface. */
@@ -37,28 +39,37 @@ final class ParticleCollider {
     /** How far outside the surface a bounced particle is put (px): far above float rounding. */
     static final float SKIN = 1f / 128f;
 
-    private final BodyGrid grid;
+    private final ObstacleGrid grid;
 
-    // The result of the last shape test, in the body's frame.
+    // The result of the last shape test: in the body's frame for bodies, in the world for segments.
     private float hitT;
     private float hitX;
     private float hitY;
     private float hitNx;
     private float hitNy;
 
-    // The result of leaveStaticBodies.
+    // The earliest hit found by earliestHit, in the world, with the surface's velocity there.
+    private float bestT;
+    private float bestX;
+    private float bestY;
+    private float bestNx;
+    private float bestNy;
+    private float bestVx;
+    private float bestVy;
+
+    // Where a point ends up in leaveStaticBodies and clipToSegments.
     private float settledX;
     private float settledY;
     private float settledVx;
     private float settledVy;
 
-    ParticleCollider(BodyGrid grid) {
+    ParticleCollider(ObstacleGrid grid) {
         this.grid = grid;
     }
 
-    /** Bounces every particle of an emitter whose motion this tick met a body. */
+    /** Bounces every particle of an emitter whose motion this tick met a body or a segment. */
     void collide(ParticleEmitter e, float dt, float gravityX, float gravityY) {
-        BodyGrid g = grid;
+        ObstacleGrid g = grid;
         if (g.count == 0) {
             return;
         }
@@ -89,20 +100,16 @@ final class ParticleCollider {
             float restNx = 0f;
             float restNy = 0f;
             for (int hits = 0;; hits++) {
-                int k = earliestHit(ax, ay, bx, by, relative);
-                if (k < 0) {
+                if (!earliestHit(ax, ay, bx, by, relative)) {
                     break;
                 }
-                // The hit, back in the world at the body's end pose.
-                float c = g.c1[k];
-                float s = g.s1[k];
-                float wx = g.x1[k] + c * hitX - s * hitY;
-                float wy = g.y1[k] + s * hitX + c * hitY;
-                float nx = c * hitNx - s * hitNy;
-                float ny = s * hitNx + c * hitNy;
-                float surfaceVx = g.vx[k] - g.w[k] * (wy - g.y1[k]);
-                float surfaceVy = g.vy[k] + g.w[k] * (wx - g.x1[k]);
-                float rest = h * (1f - hitT);
+                float wx = bestX;
+                float wy = bestY;
+                float nx = bestNx;
+                float ny = bestNy;
+                float surfaceVx = bestVx;
+                float surfaceVy = bestVy;
+                float rest = h * (1f - bestT);
                 // Velocity when it got there, relative to the surface.
                 float rx = ux - gx * rest - surfaceVx;
                 float ry = uy - gy * rest - surfaceVy;
@@ -146,8 +153,8 @@ final class ParticleCollider {
                 relative = false;
                 if (wedged || hits + 1 == MAX_HITS || !(rest > 0f)
                         || !g.covers(Math.min(ax, bx), Math.min(ay, by), Math.max(ax, bx), Math.max(ay, by))) {
-                    // Wedged, out of bounces, or the rest of the way leaves the bodies gathered: stay
-                    // here, but never inside a static body (a dynamic one may overlap the wall here).
+                    // Wedged, out of bounces, or the rest of the way leaves the obstacles gathered:
+                    // stay here, but never inside a static body (a dynamic one may overlap the wall).
                     leaveStaticBodies(wx, wy, rx, ry);
                     bx = settledX;
                     by = settledY;
@@ -165,16 +172,17 @@ final class ParticleCollider {
 
     /**
      * Moves a point out of the static bodies that contain it, each time through the nearest face,
-     * dropping the velocity into that face; leaves the result in the settled fields.
+     * dropping the velocity into that face, and never across a segment; leaves the result in the
+     * settled fields.
      */
     private void leaveStaticBodies(float x, float y, float vx, float vy) {
-        BodyGrid g = grid;
+        ObstacleGrid g = grid;
         for (int pass = 0; pass < MAX_HITS; pass++) {
             g.gather(x, y, x, y);
             int k = -1;
             for (int j = 0, n = g.foundCount; j < n && k < 0; j++) {
                 int b = g.found[j];
-                if (g.bodies[b].isDynamic()) {
+                if (b >= g.bodyCount || g.bodies[b].isDynamic()) {
                     continue;
                 }
                 float c = g.c1[b];
@@ -191,10 +199,11 @@ final class ParticleCollider {
             }
             float c = g.c1[k];
             float s = g.s1[k];
-            x = g.x1[k] + c * hitX - s * hitY;
-            y = g.y1[k] + s * hitX + c * hitY;
             float nx = c * hitNx - s * hitNy;
             float ny = s * hitNx + c * hitNy;
+            clipToSegments(x, y, g.x1[k] + c * hitX - s * hitY, g.y1[k] + s * hitX + c * hitY);
+            x = settledX;
+            y = settledY;
             float vn = vx * nx + vy * ny;
             if (vn < 0f) {
                 vx -= vn * nx;
@@ -208,23 +217,56 @@ final class ParticleCollider {
     }
 
     /**
-     * Finds the body the segment meets first and leaves its hit in the fields.
+     * Stops a jump from one point to another at the first landscape segment it would cross (a
+     * skin short of it); leaves the end in settledX, settledY.
+     */
+    private void clipToSegments(float fromX, float fromY, float toX, float toY) {
+        ObstacleGrid g = grid;
+        settledX = toX;
+        settledY = toY;
+        if (g.count == g.bodyCount) {
+            return;
+        }
+        g.gather(Math.min(fromX, toX), Math.min(fromY, toY), Math.max(fromX, toX), Math.max(fromY, toY));
+        float first = Float.POSITIVE_INFINITY;
+        for (int j = 0, n = g.foundCount; j < n; j++) {
+            int k = g.found[j];
+            if (k >= g.bodyCount && hitSegment(k - g.bodyCount, fromX, fromY, toX, toY) && hitT < first) {
+                first = hitT;
+                settledX = hitX;
+                settledY = hitY;
+            }
+        }
+    }
+
+    /**
+     * Finds the obstacle the segment a→b meets first and leaves its hit, in the world, in the best
+     * fields.
      *
      * @param relative whether the start is taken against the bodies' start-of-tick poses
-     * @return the body's index in the grid, or −1
+     * @return whether anything was hit
      */
-    private int earliestHit(float ax, float ay, float bx, float by, boolean relative) {
-        BodyGrid g = grid;
+    private boolean earliestHit(float ax, float ay, float bx, float by, boolean relative) {
+        ObstacleGrid g = grid;
         g.gather(Math.min(ax, bx), Math.min(ay, by), Math.max(ax, bx), Math.max(ay, by));
         int best = -1;
-        float bestT = Float.POSITIVE_INFINITY;
-        float bestX = 0f;
-        float bestY = 0f;
-        float bestNx = 0f;
-        float bestNy = 0f;
+        bestT = Float.POSITIVE_INFINITY;
         int[] found = g.found;
         for (int j = 0, n = g.foundCount; j < n; j++) {
             int k = found[j];
+            if (k >= g.bodyCount) {
+                if (hitSegment(k - g.bodyCount, ax, ay, bx, by) && hitT < bestT) {
+                    best = k;
+                    bestT = hitT;
+                    bestX = hitX;
+                    bestY = hitY;
+                    bestNx = hitNx;
+                    bestNy = hitNy;
+                    bestVx = 0f;
+                    bestVy = 0f;
+                }
+                continue;
+            }
             // Both ends in the body's frame.
             float x0 = relative ? g.x0[k] : g.x1[k];
             float y0 = relative ? g.y0[k] : g.y1[k];
@@ -232,25 +274,92 @@ final class ParticleCollider {
             float s0 = relative ? g.s0[k] : g.s1[k];
             float lax = c0 * (ax - x0) + s0 * (ay - y0);
             float lay = -s0 * (ax - x0) + c0 * (ay - y0);
+            float x1 = g.x1[k];
+            float y1 = g.y1[k];
             float c1 = g.c1[k];
             float s1 = g.s1[k];
-            float lbx = c1 * (bx - g.x1[k]) + s1 * (by - g.y1[k]);
-            float lby = -s1 * (bx - g.x1[k]) + c1 * (by - g.y1[k]);
+            float lbx = c1 * (bx - x1) + s1 * (by - y1);
+            float lby = -s1 * (bx - x1) + c1 * (by - y1);
             if (hitShape(g.shapes[k], lax, lay, lbx, lby) && hitT < bestT) {
                 best = k;
                 bestT = hitT;
-                bestX = hitX;
-                bestY = hitY;
-                bestNx = hitNx;
-                bestNy = hitNy;
+                // Back in the world, at the body's end pose.
+                bestX = x1 + c1 * hitX - s1 * hitY;
+                bestY = y1 + s1 * hitX + c1 * hitY;
+                bestNx = c1 * hitNx - s1 * hitNy;
+                bestNy = s1 * hitNx + c1 * hitNy;
+                bestVx = g.vx[k] - g.w[k] * (bestY - y1);
+                bestVy = g.vy[k] + g.w[k] * (bestX - x1);
             }
         }
-        hitT = bestT;
-        hitX = bestX;
-        hitY = bestY;
-        hitNx = bestNx;
-        hitNy = bestNy;
-        return best;
+        if (best < 0) {
+            return false;
+        }
+        if (best < g.bodyCount && g.count > g.bodyCount) {
+            // Moved onto a body's surface: not across the landscape.
+            float t = bestT;
+            float wx = bestX;
+            float wy = bestY;
+            float nx = bestNx;
+            float ny = bestNy;
+            float vx = bestVx;
+            float vy = bestVy;
+            clipToSegments(ax + t * (bx - ax), ay + t * (by - ay), wx, wy);
+            bestT = t;
+            bestX = settledX;
+            bestY = settledY;
+            bestNx = nx;
+            bestNy = ny;
+            bestVx = vx;
+            bestVy = vy;
+        }
+        return true;
+    }
+
+    /**
+     * Crosses the path a→b with segment s of the grid, from either side (faces are ignored for
+     * particles, as in the original). The segment is stretched by a skin at both ends so that a
+     * path through a joint of a chain is caught by one of its segments despite rounding; a path
+     * starting exactly on the line is not a crossing.
+     */
+    boolean hitSegment(int s, float ax, float ay, float bx, float by) {
+        ObstacleGrid g = grid;
+        float px = g.segX1[s];
+        float py = g.segY1[s];
+        float ex = g.segX2[s] - px;
+        float ey = g.segY2[s] - py;
+        // Twice the signed areas: the sides of a and b, scaled by the segment's length.
+        float da = ex * (ay - py) - ey * (ax - px);
+        float db = ex * (by - py) - ey * (bx - px);
+        if (da == 0f || da > 0f && db > 0f || da < 0f && db < 0f) {
+            return false;
+        }
+        float len2 = ex * ex + ey * ey;
+        if (!(len2 > 0f)) {
+            return false;
+        }
+        float t = da / (da - db);
+        float qx = ax + t * (bx - ax);
+        float qy = ay + t * (by - ay);
+        float len = EMath.sqrt(len2);
+        float along = ((qx - px) * ex + (qy - py) * ey) / len;
+        if (along < -SKIN || along > len + SKIN) {
+            return false;
+        }
+        // The normal on a's side; the hit on the line, then a skin out.
+        float nx = -ey / len;
+        float ny = ex / len;
+        if (da < 0f) {
+            nx = -nx;
+            ny = -ny;
+        }
+        float out = SKIN - (nx * (qx - px) + ny * (qy - py));
+        hitT = t;
+        hitX = qx + out * nx;
+        hitY = qy + out * ny;
+        hitNx = nx;
+        hitNy = ny;
+        return true;
     }
 
     private boolean hitShape(Shape shape, float ax, float ay, float bx, float by) {

@@ -26,7 +26,9 @@ import org.emini.math.EMath;
 public final class ParticleSystem {
     private ParticleEmitter[] emitters = new ParticleEmitter[4];
     private int emitterCount;
-    private final BodyGrid grid = new BodyGrid();
+    private final ObstacleGrid grid = new ObstacleGrid();
+    /** The segments particles bounce off besides the bodies: the landscape, once there is one. */
+    SegmentSource segments;
     private final ParticleCollider collider = new ParticleCollider(grid);
 
     /** Creates an empty particle system. */
@@ -162,7 +164,7 @@ public final class ParticleSystem {
             }
         }
         if (minX <= maxX && EMath.isFinite(maxX - minX) && EMath.isFinite(maxY - minY)) {
-            grid.build(world, minX, minY, maxX, maxY, dt);
+            grid.build(world, segments, minX, minY, maxX, maxY, dt);
             for (int i = 0; i < emitterCount; i++) {
                 ParticleEmitter e = emitters[i];
                 if (e.canCollide()) {

@@ -7,9 +7,11 @@ import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
 /**
- * The bodies particles can hit in one tick, in a uniform grid rebuilt every tick.
+ * The bodies and landscape segments particles can hit in one tick, in a uniform grid rebuilt every
+ * tick.
  *
- * <p>Only interacting bodies whose motion over the tick overlaps the particles' region are taken.
+ * <p>Obstacles are numbered bodies first ({@code 0 .. bodyCount − 1}), then segments. Only
+ * interacting bodies whose motion over the tick overlaps the particles' region are taken.
  * Each keeps its pose at the end of the tick (the solver's result) and its pose at the start,
  * extrapolated back with its final velocities, so a particle's motion can be tested relative to a
  * moving body. The grid is built from exact current boxes rather than queried from the world's
@@ -20,11 +22,14 @@ import org.emini.shape.Shape;
  * 128 × 128 cells. Bodies that would cover more than {@link #MAX_CELLS_PER_BODY} cells (walls, the
  * ground) go to a short list that every query scans.
  */
-final class BodyGrid {
+final class ObstacleGrid {
     private static final int MAX_CELLS_PER_SIDE = 128;
-    /** Bodies covering more cells than this are scanned by every query instead. */
+    /** Obstacles covering more cells than this are scanned by every query instead. */
     static final int MAX_CELLS_PER_BODY = 64;
 
+    /** Bodies, numbered first. */
+    int bodyCount;
+    /** Bodies and segments. */
     int count;
     Body[] bodies = new Body[16];
     Shape[] shapes = new Shape[16];
@@ -40,7 +45,12 @@ final class BodyGrid {
     float[] vx = new float[16];
     float[] vy = new float[16];
     float[] w = new float[16];
-    // Box around the body over the whole tick.
+    // Segments, by obstacle number − bodyCount.
+    float[] segX1 = new float[16];
+    float[] segY1 = new float[16];
+    float[] segX2 = new float[16];
+    float[] segY2 = new float[16];
+    // Box around each obstacle over the whole tick.
     float[] minX = new float[16];
     float[] minY = new float[16];
     float[] maxX = new float[16];
@@ -66,7 +76,7 @@ final class BodyGrid {
     private int[] large = new int[4];
     private int largeCount;
 
-    /** The bodies found by the last {@link #gather}. */
+    /** The obstacles found by the last {@link #gather}. */
     int[] found = new int[16];
     int foundCount;
 
@@ -84,7 +94,7 @@ final class BodyGrid {
      * out of the region by up to half the body's narrower side; the region is grown by the largest
      * such distance among the bodies it touches, so that the bodies where it may land are known too.
      */
-    void build(World world, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
+    void build(World world, SegmentSource segments, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
         count = 0;
         largeCount = 0;
         int n = world.getBodyCount();
@@ -170,7 +180,7 @@ final class BodyGrid {
                 continue;
             }
             int k = count;
-            if (k == bodies.length) {
+            if (k == minX.length) {
                 grow();
             }
             bodies[k] = b;
@@ -197,6 +207,43 @@ final class BodyGrid {
         for (int k = count; k < bodies.length && bodies[k] != null; k++) {
             bodies[k] = null;
             shapes[k] = null;
+        }
+        bodyCount = count;
+        int segmentCount = segments == null ? 0 : segments.getSegmentCount();
+        for (int j = 0; j < segmentCount; j++) {
+            float ax = segments.getStartX(j);
+            float ay = segments.getStartY(j);
+            float bx = segments.getEndX(j);
+            float by = segments.getEndY(j);
+            float lowX = Math.min(ax, bx);
+            float lowY = Math.min(ay, by);
+            float highX = Math.max(ax, bx);
+            float highY = Math.max(ay, by);
+            if (lowX > rMaxX || highX < rMinX || lowY > rMaxY || highY < rMinY) {
+                continue;
+            }
+            int k = count;
+            if (k == minX.length) {
+                grow();
+            }
+            int s = k - bodyCount;
+            if (s == segX1.length) {
+                int size = 2 * s;
+                segX1 = Arrays.copyOf(segX1, size);
+                segY1 = Arrays.copyOf(segY1, size);
+                segX2 = Arrays.copyOf(segX2, size);
+                segY2 = Arrays.copyOf(segY2, size);
+            }
+            segX1[s] = ax;
+            segY1[s] = ay;
+            segX2[s] = bx;
+            segY2[s] = by;
+            minX[k] = lowX;
+            minY[k] = lowY;
+            maxX[k] = highX;
+            maxY[k] = highY;
+            sizeSum += Math.max(Math.min(highX, rMaxX) - Math.max(lowX, rMinX), Math.min(highY, rMaxY) - Math.max(lowY, rMinY));
+            count = k + 1;
         }
         if (count > 0) {
             index(sizeSum / count);
@@ -331,7 +378,7 @@ final class BodyGrid {
     }
 
     private void grow() {
-        int n = 2 * bodies.length;
+        int n = 2 * minX.length;
         bodies = Arrays.copyOf(bodies, n);
         shapes = Arrays.copyOf(shapes, n);
         x0 = Arrays.copyOf(x0, n);
