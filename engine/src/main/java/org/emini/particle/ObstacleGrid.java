@@ -81,6 +81,7 @@ final class ObstacleGrid {
     int foundCount;
 
     private final float[] box = new float[4];
+    private float sizeSum;
     // Per world body: a cheap box around its motion this tick (min x = +inf for bodies left out).
     private float[] reachMinX = new float[16];
     private float[] reachMinY = new float[16];
@@ -139,7 +140,7 @@ final class ObstacleGrid {
         regionMaxX = rMaxX;
         regionMaxY = rMaxY;
         // Second pass: the bodies in reach of the grown region, with both poses.
-        float sizeSum = 0f;
+        sizeSum = 0f;
         for (int i = 0; i < n; i++) {
             if (reachMinX[i] > rMaxX || reachMaxX[i] < rMinX || reachMinY[i] > rMaxY || reachMaxY[i] < rMinY) {
                 continue;
@@ -179,10 +180,7 @@ final class ObstacleGrid {
             if (lowX > rMaxX || highX < rMinX || lowY > rMaxY || highY < rMinY) {
                 continue;
             }
-            int k = count;
-            if (k == minX.length) {
-                grow();
-            }
+            int k = append(lowX, lowY, highX, highY);
             bodies[k] = b;
             shapes[k] = shape;
             x0[k] = sx;
@@ -196,13 +194,6 @@ final class ObstacleGrid {
             vx[k] = bvx;
             vy[k] = bvy;
             w[k] = bw;
-            minX[k] = lowX;
-            minY[k] = lowY;
-            maxX[k] = highX;
-            maxY[k] = highY;
-            // Size as seen inside the region, so one huge ground does not coarsen the grid.
-            sizeSum += Math.max(Math.min(highX, rMaxX) - Math.max(lowX, rMinX), Math.min(highY, rMaxY) - Math.max(lowY, rMinY));
-            count = k + 1;
         }
         for (int k = count; k < bodies.length && bodies[k] != null; k++) {
             bodies[k] = null;
@@ -222,11 +213,7 @@ final class ObstacleGrid {
             if (lowX > rMaxX || highX < rMinX || lowY > rMaxY || highY < rMinY) {
                 continue;
             }
-            int k = count;
-            if (k == minX.length) {
-                grow();
-            }
-            int s = k - bodyCount;
+            int s = append(lowX, lowY, highX, highY) - bodyCount;
             if (s == segX1.length) {
                 int size = 2 * s;
                 segX1 = Arrays.copyOf(segX1, size);
@@ -238,16 +225,27 @@ final class ObstacleGrid {
             segY1[s] = ay;
             segX2[s] = bx;
             segY2[s] = by;
-            minX[k] = lowX;
-            minY[k] = lowY;
-            maxX[k] = highX;
-            maxY[k] = highY;
-            sizeSum += Math.max(Math.min(highX, rMaxX) - Math.max(lowX, rMinX), Math.min(highY, rMaxY) - Math.max(lowY, rMinY));
-            count = k + 1;
         }
         if (count > 0) {
             index(sizeSum / count);
         }
+    }
+
+    /** Adds an obstacle with its box and counts its size; returns its number. */
+    private int append(float lowX, float lowY, float highX, float highY) {
+        int k = count;
+        if (k == minX.length) {
+            grow();
+        }
+        minX[k] = lowX;
+        minY[k] = lowY;
+        maxX[k] = highX;
+        maxY[k] = highY;
+        // Size as seen inside the region, so one huge ground does not coarsen the grid.
+        sizeSum += Math.max(Math.min(highX, regionMaxX) - Math.max(lowX, regionMinX),
+            Math.min(highY, regionMaxY) - Math.max(lowY, regionMinY));
+        count = k + 1;
+        return k;
     }
 
     /** Sorts the bodies into cells (a counting sort: count, prefix sums, fill). */
@@ -326,9 +324,15 @@ final class ObstacleGrid {
         return i < 0 ? 0 : i >= cellsY ? cellsY - 1 : i;
     }
 
-    /** Whether a box lies inside the region the bodies were selected for. */
-    boolean covers(float lowX, float lowY, float highX, float highY) {
-        return lowX >= regionMinX && highX <= regionMaxX && lowY >= regionMinY && highY <= regionMaxY;
+    /** Whether the box around the path a→b lies inside the region the obstacles were selected for. */
+    boolean covers(float ax, float ay, float bx, float by) {
+        return Math.min(ax, bx) >= regionMinX && Math.max(ax, bx) <= regionMaxX
+            && Math.min(ay, by) >= regionMinY && Math.max(ay, by) <= regionMaxY;
+    }
+
+    /** {@link #gather} for the box around the path a→b. */
+    void gatherPath(float ax, float ay, float bx, float by) {
+        gather(Math.min(ax, bx), Math.min(ay, by), Math.max(ax, bx), Math.max(ay, by));
     }
 
     /**

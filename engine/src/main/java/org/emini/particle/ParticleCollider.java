@@ -152,7 +152,7 @@ final class ParticleCollider {
                 h = rest;
                 relative = false;
                 if (wedged || hits + 1 == MAX_HITS || !(rest > 0f)
-                        || !g.covers(Math.min(ax, bx), Math.min(ay, by), Math.max(ax, bx), Math.max(ay, by))) {
+                        || !g.covers(ax, ay, bx, by)) {
                     // Wedged, out of bounces, or the rest of the way leaves the obstacles gathered:
                     // stay here, but never inside a static body (a dynamic one may overlap the wall).
                     leaveStaticBodies(wx, wy, rx, ry);
@@ -227,7 +227,7 @@ final class ParticleCollider {
         if (g.count == g.bodyCount) {
             return;
         }
-        g.gather(Math.min(fromX, toX), Math.min(fromY, toY), Math.max(fromX, toX), Math.max(fromY, toY));
+        g.gatherPath(fromX, fromY, toX, toY);
         float first = Float.POSITIVE_INFINITY;
         for (int j = 0, n = g.foundCount; j < n; j++) {
             int k = g.found[j];
@@ -248,7 +248,7 @@ final class ParticleCollider {
      */
     private boolean earliestHit(float ax, float ay, float bx, float by, boolean relative) {
         ObstacleGrid g = grid;
-        g.gather(Math.min(ax, bx), Math.min(ay, by), Math.max(ax, bx), Math.max(ay, by));
+        g.gatherPath(ax, ay, bx, by);
         int best = -1;
         bestT = Float.POSITIVE_INFINITY;
         int[] found = g.found;
