@@ -261,6 +261,17 @@ public final class Collider {
         }
     }
 
+    /**
+     * The side of the segment the last {@link #collideSegment} call collided the shape from: +1 or
+     * −1 as in {@link Segment#side}, 0 when the segment ignored the shape. Pass it back through
+     * {@link Segment#side} while the contact persists.
+     *
+     * @return the side
+     */
+    public int getSegmentSide() {
+        return segments.foundSide;
+    }
+
     /** Writes a one-point manifold given in A's local frame, converting it to the world. */
     private static void writeOnePoint(float ax, float ay, float ac, float as, float nx, float ny,
             float px, float py, float separation, Manifold out) {

@@ -81,7 +81,9 @@ final class PolygonCollider {
      * Collides a one-sided segment A with a polygon B, in a frame with B's position as origin and
      * the world's axes. A is the two-vertex polygon (x1, y1), (x2, y2) whose first face has the
      * outward unit normal (nx, ny): only that face is tried as a separating axis, and only B's faces
-     * whose bit is set in admissible, so the normal never points where the caller forbids it.
+     * whose bit is set in admissible, so the normal never points where the caller forbids it. The
+     * caller handles a polygon lying wholly beyond an end of the segment, where the test on these
+     * axes alone could report an overlap that is not there.
      * Vertex ids name A's vertices 0 (first given) and 1. The result is in the world.
      */
     void collideSegment(float x1, float y1, float x2, float y2, float nx, float ny,

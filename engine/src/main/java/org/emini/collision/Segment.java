@@ -45,6 +45,15 @@ public final class Segment {
     public float nextX;
     /** World y of the far end of the segment joined at the end point (px). */
     public float nextY;
+    /**
+     * The side to collide from: 0 to decide by the shape's centroid (and, for a faced segment, to
+     * ignore a shape on the open side), or the side a contact with the same shape was found on
+     * last time ({@link Collider#getSegmentSide()}: +1 the left of start → end on a y-down screen,
+     * where a facing-2 segment blocks; −1 the other side), to keep it whatever the centroid, so a
+     * shape pushed deeper than its centroid into a thin landscape is pushed back out rather than
+     * through. A side that a faced segment does not block is ignored.
+     */
+    public int side;
 
     /** Creates a segment from (0, 0) to (0, 0), solid from both sides, with no neighbours. */
     public Segment() {
@@ -68,6 +77,7 @@ public final class Segment {
         this.face = face;
         hasPrev = false;
         hasNext = false;
+        side = 0;
         return this;
     }
 

@@ -191,4 +191,44 @@ class SegmentColliderTest {
         MultiShape multi = Shape.createMultiShape(box);
         assertThrows(IllegalArgumentException.class, () -> collide(floor, multi, 0f, 0f, 0f, 1f));
     }
+
+    /** A shape that touched from above keeps that side even once its centroid is below. */
+    @Test
+    void aKeptSideHoldsAShapeWhoseCentroidHasCrossed() {
+        Segment s = new Segment().set(-100f, 0f, 100f, 0f, Segment.FACE_NONE);
+        collide(s, box, 0f, 1f, 0f, 1f);
+        assertEquals(1f, m.normalY, EPS, "by its centroid it is below: pushed down");
+        assertEquals(1, collider.getSegmentSide());
+        s.side = -1;
+        collide(s, box, 0f, 1f, 0f, 1f);
+        assertEquals(2, m.pointCount);
+        assertEquals(-1f, m.normalY, EPS, "kept above: pushed back up");
+        assertEquals(-11f, m.separation[0], EPS);
+        assertEquals(-1, collider.getSegmentSide());
+        // A faced segment keeps only the side it blocks.
+        Segment left = new Segment().set(-100f, 0f, 100f, 0f, Segment.FACE_LEFT);
+        left.side = 1;
+        collide(left, box, 0f, 1f, 0f, 1f);
+        assertEquals(0, m.pointCount);
+        assertEquals(0, collider.getSegmentSide());
+    }
+
+    /**
+     * A peak from (−100, 10) up to (0, 0) and down to (100, 10): a box above the top, level or
+     * tilted less than the faces, touches the top joint only, with its own face as the normal.
+     */
+    @Test
+    void boxAboveAPeakTouchesTheTopJointAlongItsOwnFace() {
+        Segment up = new Segment().set(-100f, 10f, 0f, 0f, Segment.FACE_NONE);
+        up.hasNext = true;
+        up.nextX = 100f;
+        up.nextY = 10f;
+        for (float angle : new float[] {0f, 0.05f, -0.05f}) {
+            collide(up, box, 0f, -10.5f, angle, 1f);
+            assertEquals(1, m.pointCount, m.toString());
+            assertEquals((float) Math.sin(angle), m.normalX, EPS, "angle " + angle);
+            assertEquals(-(float) Math.cos(angle), m.normalY, EPS);
+            assertEquals(10.5f * (float) Math.cos(angle) - 10f, m.separation[0], 1e-3f);
+        }
+    }
 }
