@@ -557,7 +557,8 @@ public final class World {
     // Contacts
 
     /**
-     * The number of contacts (pairs of bodies close enough to be tested), touching or not.
+     * The number of contacts, touching or not: pairs of bodies close enough to be tested (one per
+     * pair of parts for multi-shapes) and bodies near landscape segments (one per segment).
      *
      * @return the count
      */
