@@ -29,8 +29,8 @@ import org.emini.math.EMath;
  * Zero-length segments are kept but collide with nothing.
  *
  * <p>Change the landscape only between ticks. Removing a segment shifts the indices of the later
- * ones. The index is rebuilt at the next tick after a change, in O(n log n) for n segments. A
- * landscape may be shared by worlds that are ticked on one thread.
+ * ones. A few segments added or removed cost little; after many, the index is rebuilt at the next
+ * tick, in O(n log n) for n segments. A landscape may be shared by worlds ticked on one thread.
  */
 public final class Landscape {
     /** Solid from both sides. */
@@ -45,6 +45,9 @@ public final class Landscape {
     public static final float DEFAULT_ELASTICITY = 0f;
     /** End points closer than this (px) join two segments into a chain. */
     public static final float JOIN_TOLERANCE = 0.01f;
+    // Segments added (or removed from the tree) since the last build before the tree is rebuilt,
+    // at least; 2·√n for n segments when that is more.
+    private static final int REBUILD_EDITS = 64;
 
     // Segments live in slots that keep their number while other segments come and go, so contacts
     // can refer to them; stamp tells a slot's successive occupants apart (0 when free).
@@ -64,6 +67,10 @@ public final class Landscape {
     private int slotHigh;
     private int[] freeSlots = new int[16];
     private int freeCount;
+    // Slots freed since the tree was built: the tree may still hold their old boxes, so they are
+    // reused only after the next build.
+    private int[] pendingFree = new int[16];
+    private int pendingFreeCount;
     private int nextStamp;
     /** Slot of each segment, in index order. */
     private int[] order = new int[16];
@@ -75,8 +82,21 @@ public final class Landscape {
     /** Bumped by every change of the segments; a world re-queries its bodies when it moves. */
     int modCount;
     private boolean dirty;
+    // The index: a static tree built from the segments present at the last build, plus the few
+    // added since (scanned one by one) and minus those removed since (skipped). Small edits thus
+    // cost little; the tree is rebuilt once enough of them have piled up.
     private final StaticAabbTree tree = new StaticAabbTree();
+    private boolean[] inTree = new boolean[16];
+    private int treeCount;
+    private int treeDead;
+    private int[] recent = new int[16];
+    private int recentCount;
+    private boolean built;
+    // End points of the segments added or removed since the last prepare, whose joins may change.
+    private float[] touched = new float[16];
+    private int touchedCount;
     private final JoinFinder joins = new JoinFinder();
+    private final LiveFilter live = new LiveFilter();
     // Build input, by slot.
     private float[] boxMinX = new float[0];
     private float[] boxMinY = new float[0];
@@ -160,6 +180,10 @@ public final class Landscape {
         y2[slot] = ey;
         face[slot] = f;
         stamp[slot] = ++nextStamp;
+        inTree[slot] = false;
+        recent = push(recent, recentCount++, slot);
+        touch(sx, sy);
+        touch(ex, ey);
         if (count == order.length) {
             order = Arrays.copyOf(order, 2 * count);
         }
@@ -178,6 +202,7 @@ public final class Landscape {
         stamp = Arrays.copyOf(stamp, n);
         slotIndex = Arrays.copyOf(slotIndex, n);
         hasPrev = Arrays.copyOf(hasPrev, n);
+        inTree = Arrays.copyOf(inTree, n);
         hasNext = Arrays.copyOf(hasNext, n);
         prevX = Arrays.copyOf(prevX, n);
         prevY = Arrays.copyOf(prevY, n);
@@ -202,10 +227,12 @@ public final class Landscape {
         }
         slotIndex[slot] = -1;
         stamp[slot] = 0;
-        if (freeCount == freeSlots.length) {
-            freeSlots = Arrays.copyOf(freeSlots, 2 * freeCount);
+        if (inTree[slot]) {
+            treeDead++;
         }
-        freeSlots[freeCount++] = slot;
+        touch(x1[slot], y1[slot]);
+        touch(x2[slot], y2[slot]);
+        pendingFree = push(pendingFree, pendingFreeCount++, slot);
         changed();
     }
 
@@ -214,6 +241,21 @@ public final class Landscape {
         while (count > 0) {
             removeSegment(count - 1);
         }
+    }
+
+    private static int[] push(int[] a, int at, int value) {
+        int[] b = at == a.length ? Arrays.copyOf(a, 2 * at) : a;
+        b[at] = value;
+        return b;
+    }
+
+    private void touch(float x, float y) {
+        if (2 * touchedCount + 2 > touched.length) {
+            touched = Arrays.copyOf(touched, 2 * touched.length);
+        }
+        touched[2 * touchedCount] = x;
+        touched[2 * touchedCount + 1] = y;
+        touchedCount++;
     }
 
     private void changed() {
@@ -360,12 +402,30 @@ public final class Landscape {
     // ---------------------------------------------------------------------------------------------
     // For the world
 
-    /** Rebuilds the index and the chain joins if the segments changed. */
+    /**
+     * Brings the index and the chain joins up to date after changes: a full rebuild once many
+     * segments were added or removed since the last one, otherwise only the joins around the
+     * changed end points.
+     */
     void prepare() {
         if (!dirty) {
             return;
         }
         dirty = false;
+        // Edits left in the list cost every query a box test each; a rebuild costs O(n log n).
+        int allowed = Math.max(REBUILD_EDITS, 2 * (int) EMath.sqrt(count));
+        if (!built || recentCount > allowed || treeDead > Math.max(allowed, treeCount / 2)) {
+            rebuild();
+        } else {
+            for (int k = 0; k < touchedCount; k++) {
+                joins.update(touched[2 * k], touched[2 * k + 1]);
+            }
+        }
+        touchedCount = 0;
+    }
+
+    private void rebuild() {
+        built = true;
         if (boxMinX.length < count) {
             int n = Math.max(count, 2 * boxMinX.length);
             boxMinX = new float[n];
@@ -381,22 +441,50 @@ public final class Landscape {
             boxMaxX[i] = Math.max(x1[s], x2[s]);
             boxMaxY[i] = Math.max(y1[s], y2[s]);
             boxSlot[i] = s;
+            inTree[s] = true;
         }
         tree.build(count, boxMinX, boxMinY, boxMaxX, boxMaxY, boxSlot);
+        treeCount = count;
+        treeDead = 0;
+        recentCount = 0;
+        for (int i = 0; i < pendingFreeCount; i++) {
+            freeSlots = push(freeSlots, freeCount++, pendingFree[i]);
+        }
+        pendingFreeCount = 0;
         for (int i = 0; i < count; i++) {
             int s = order[i];
-            hasPrev[s] = joins.find(s, x1[s], y1[s]);
-            prevX[s] = joins.farX;
-            prevY[s] = joins.farY;
-            hasNext[s] = joins.find(s, x2[s], y2[s]);
-            nextX[s] = joins.farX;
-            nextY[s] = joins.farY;
+            joins.set(s, true, x1[s], y1[s]);
+            joins.set(s, false, x2[s], y2[s]);
         }
     }
 
     /** Reports the slots of the segments whose boxes overlap a box; call {@link #prepare} first. */
     void query(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
-        tree.query(minX, minY, maxX, maxY, callback);
+        live.forward = callback;
+        live.stopped = false;
+        tree.query(minX, minY, maxX, maxY, live);
+        live.forward = null;
+        for (int i = 0; i < recentCount && !live.stopped; i++) {
+            int s = recent[i];
+            if (stamp[s] != 0 && overlaps(s, minX, minY, maxX, maxY) && !callback.reportProxy(s)) {
+                return;
+            }
+        }
+    }
+
+    /** Passes on the tree's slots that still hold a segment. */
+    private final class LiveFilter implements QueryCallback {
+        QueryCallback forward;
+        boolean stopped;
+
+        @Override
+        public boolean reportProxy(int slot) {
+            if (stamp[slot] == 0) {
+                return true;
+            }
+            stopped = !forward.reportProxy(slot);
+            return !stopped;
+        }
     }
 
     /** The stamp of a slot's current segment, 0 when the slot is free. */
@@ -426,17 +514,59 @@ public final class Landscape {
         out.nextY = nextY[slot];
     }
 
-    /** Finds the one other segment that has an end at a point, and its far end. */
+    /**
+     * Finds the one other segment that has an end at a point, and its far end; sets the joins of
+     * the segments ending at a changed point.
+     */
     private final class JoinFinder implements QueryCallback {
         private int self;
         private float px;
         private float py;
         private float tolerance;
         private int found;
-        float farX;
-        float farY;
+        private float farX;
+        private float farY;
+        // In update mode the query collects the segments ending at the point instead.
+        private boolean collecting;
+        private int[] ending = new int[8];
+        private int endingCount;
 
-        boolean find(int slot, float x, float y) {
+        /** Sets the join at one end of a slot's segment. */
+        void set(int slot, boolean start, float x, float y) {
+            begin(slot, x, y);
+            query(x - tolerance, y - tolerance, x + tolerance, y + tolerance, this);
+            if (start) {
+                hasPrev[slot] = found == 1;
+                prevX[slot] = farX;
+                prevY[slot] = farY;
+            } else {
+                hasNext[slot] = found == 1;
+                nextX[slot] = farX;
+                nextY[slot] = farY;
+            }
+        }
+
+        /** Sets the joins of every segment with an end at a point. */
+        void update(float x, float y) {
+            begin(-1, x, y);
+            collecting = true;
+            endingCount = 0;
+            query(x - tolerance, y - tolerance, x + tolerance, y + tolerance, this);
+            collecting = false;
+            for (int i = 0; i < endingCount; i++) {
+                int s = ending[i];
+                if (near(x1[s], y1[s])) {
+                    set(s, true, x1[s], y1[s]);
+                }
+                if (near(x2[s], y2[s])) {
+                    set(s, false, x2[s], y2[s]);
+                }
+                // set() moved the point; restore it for the next near().
+                begin(-1, x, y);
+            }
+        }
+
+        private void begin(int slot, float x, float y) {
             self = slot;
             px = x;
             py = y;
@@ -444,8 +574,6 @@ public final class Landscape {
             found = 0;
             farX = 0f;
             farY = 0f;
-            tree.query(x - tolerance, y - tolerance, x + tolerance, y + tolerance, this);
-            return found == 1;
         }
 
         @Override
@@ -457,20 +585,22 @@ public final class Landscape {
             float ay = y1[slot];
             float bx = x2[slot];
             float by = y2[slot];
+            boolean atStart = near(ax, ay);
+            if (!atStart && !near(bx, by)) {
+                return true;
+            }
+            if (collecting) {
+                ending = push(ending, endingCount++, slot);
+                return true;
+            }
             float dx = bx - ax;
             float dy = by - ay;
             if (EMath.sqrt(dx * dx + dy * dy) <= tolerance) {
                 return true;
             }
-            if (near(ax, ay)) {
-                found++;
-                farX = bx;
-                farY = by;
-            } else if (near(bx, by)) {
-                found++;
-                farX = ax;
-                farY = ay;
-            }
+            found++;
+            farX = atStart ? bx : ax;
+            farY = atStart ? by : ay;
             return true;
         }
 
