@@ -21,6 +21,7 @@ public final class Body {
     private boolean rotatable = true;
     private boolean interacting = true;
     private boolean gravityAffected = true;
+    private boolean bullet;
     private int layers;
     private Object userData;
 
@@ -84,6 +85,7 @@ public final class Body {
         rotatable = other.rotatable;
         interacting = other.interacting;
         gravityAffected = other.gravityAffected;
+        bullet = other.bullet;
         layers = other.layers;
         userData = other.userData;
         x = other.x;
@@ -483,6 +485,26 @@ public final class Body {
      */
     public void setGravityAffected(boolean affected) {
         this.gravityAffected = affected;
+    }
+
+    /**
+     * Whether this body is swept against moving bodies too. Every fast body is already kept from
+     * passing through static bodies and the landscape; a bullet is also kept from passing through
+     * other dynamic bodies, at some extra cost.
+     *
+     * @return true for a bullet
+     */
+    public boolean isBullet() {
+        return bullet;
+    }
+
+    /**
+     * Marks the body as a bullet (see {@link #isBullet()}).
+     *
+     * @param bullet true for a bullet
+     */
+    public void setBullet(boolean bullet) {
+        this.bullet = bullet;
     }
 
     /**

@@ -499,7 +499,46 @@ final class ContactSolver {
             float vby = st[ob + VY];
             float wb = st[ob + W];
             int pc = n[io + POINTS];
-            for (int p = 0; p < pc; p++) {
+            boolean solved = false;
+            if (f[fo + BLOCK] != 0f) {
+                // Face contacts bounce as a whole: both points together, or the box would spin.
+                int p1 = fo + P0;
+                int p2 = p1 + PS;
+                float rel1 = f[p1 + RELVEL];
+                float rel2 = f[p2 + RELVEL];
+                if (rel1 <= -threshold && rel2 <= -threshold && f[p1 + MAXIMP] != 0f && f[p2 + MAXIMP] != 0f) {
+                    float r1ax = f[p1 + RAX];
+                    float r1ay = f[p1 + RAY];
+                    float r1bx = f[p1 + RBX];
+                    float r1by = f[p1 + RBY];
+                    float r2ax = f[p2 + RAX];
+                    float r2ay = f[p2 + RAY];
+                    float r2bx = f[p2 + RBX];
+                    float r2by = f[p2 + RBY];
+                    float e1 = (vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny + e * rel1;
+                    float e2 = (vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny + e * rel2;
+                    float a1 = f[p1 + NIMP];
+                    float a2 = f[p2 + NIMP];
+                    float x1 = a1 - (f[fo + K11] * e1 + f[fo + K12] * e2);
+                    float x2 = a2 - (f[fo + K12] * e1 + f[fo + K22] * e2);
+                    if (x1 >= 0f && x2 >= 0f) {
+                        solved = true;
+                        float d1 = x1 - a1;
+                        float d2 = x2 - a2;
+                        f[p1 + NIMP] = x1;
+                        f[p2 + NIMP] = x2;
+                        float px = (d1 + d2) * nx;
+                        float py = (d1 + d2) * ny;
+                        vax -= mA * px;
+                        vay -= mA * py;
+                        wa -= iA * ((r1ax * ny - r1ay * nx) * d1 + (r2ax * ny - r2ay * nx) * d2);
+                        vbx += mB * px;
+                        vby += mB * py;
+                        wb += iB * ((r1bx * ny - r1by * nx) * d1 + (r2bx * ny - r2by * nx) * d2);
+                    }
+                }
+            }
+            for (int p = 0; p < pc && !solved; p++) {
                 int po = fo + P0 + p * PS;
                 float rel = f[po + RELVEL];
                 if (rel > -threshold || f[po + MAXIMP] == 0f) {

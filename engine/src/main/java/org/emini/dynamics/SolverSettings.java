@@ -15,7 +15,7 @@ public final class SolverSettings {
     private float contactDampingRatio = 10f;
     private float contactPushMaxVelocity = 60f;
     private float restitutionThreshold = 10f;
-    private float convergenceTolerance = 0.05f;
+    private float convergenceTolerance = 0.02f;
     private float jointHertz = 60f;
     private float jointDampingRatio = 2f;
 
@@ -160,7 +160,9 @@ public final class SolverSettings {
 
     /**
      * In dynamic-iteration mode, the solver counts as converged once no constraint changed a
-     * relative velocity by more than this in a relax pass. Default 0.05 px/s.
+     * relative velocity by more than this in a relax pass. Default 0.02 px/s: measured, towers of 40
+     * boxes stand at 20 and 60 ticks per second with about 6 to 8 of 10 iterations; at 0.5 px/s a
+     * tower of 10 falls.
      *
      * @return the tolerance (px/s)
      */

@@ -14,9 +14,9 @@ import org.emini.collision.BroadPhase;
  * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver splits the tick into substeps, one per
  * iteration: each substep integrates velocities, warm-starts, makes one soft (position-correcting)
  * pass over the contacts, integrates positions and makes one rigid relax pass. A restitution pass
- * ends the tick. In dynamic-iteration mode the solver stops substepping once a relax pass changes no
- * velocity by more than {@link SolverSettings#getConvergenceTolerance()} and integrates the rest of
- * the tick in one step.
+ * ends the tick. In dynamic-iteration mode the solver stops solving once a relax pass changes no
+ * velocity by more than {@link SolverSettings#getConvergenceTolerance()}: the remaining substeps
+ * only integrate, re-applying the converged impulses (warm start) so resting stacks stay put.
  *
  * <p>A tick allocates nothing once the world's arrays have grown to the scene, and the same world
  * with the same inputs gives bit-identical results.
@@ -44,6 +44,7 @@ public final class World {
     private final SolverBodies solverBodies = new SolverBodies();
     private final ContactSolver contactSolver = new ContactSolver();
     private final SolverStep step = new SolverStep(solverBodies);
+    private final ContinuousSolver continuous = new ContinuousSolver(this);
     private Constraint[] constraints = new Constraint[8];
     private int constraintCount;
     private final Softness soft = new Softness();
@@ -330,6 +331,10 @@ public final class World {
 
     Body bodyInSlot(int slot) {
         return slots[slot];
+    }
+
+    int getBroadPhaseUserData(int proxyId) {
+        return broadPhase.getUserData(proxyId);
     }
 
     void bodyGeometryChanged(Body b) {
@@ -664,41 +669,38 @@ public final class World {
         int used = 0;
         float hh = h;
         float change = Float.MAX_VALUE;
+        boolean converged = false;
         for (int i = 0; i < n; i++) {
-            if (dynamicIterations && i > 0 && change < tolerance) {
-                // Converged: one step for the rest of the tick.
-                float rest = h * (n - i);
-                contactSolver.scaleImpulses(rest / h);
-                setSoftness(rest);
-                contactSolver.resoften(soft, staticSoft);
-                step.setSubstep(rest, jointHertz, jointDamping);
-                hh = rest;
-                i = n - 1;
-            }
             float invH = 1f / hh;
             sb.integrateVelocities(hh);
             for (int c = 0; c < cn; c++) {
                 cs[c].warmStart(step);
             }
             contactSolver.warmStart(sb);
-            for (int c = 0; c < cn; c++) {
-                cs[c].solve(step, true);
+            if (!converged) {
+                for (int c = 0; c < cn; c++) {
+                    cs[c].solve(step, true);
+                }
+                contactSolver.solve(sb, true, invH, maxPush, slop);
             }
-            contactSolver.solve(sb, true, invH, maxPush, slop);
             sb.integratePositions(hh);
-            change = 0f;
-            for (int c = 0; c < cn; c++) {
-                change = Math.max(change, cs[c].solve(step, false));
+            if (!converged) {
+                change = 0f;
+                for (int c = 0; c < cn; c++) {
+                    change = Math.max(change, cs[c].solve(step, false));
+                }
+                contactSolver.solve(sb, false, invH, maxPush, slop);
+                change = Math.max(change, contactSolver.lastRelaxChange);
+                used++;
+                converged = dynamicIterations && change < tolerance;
             }
-            contactSolver.solve(sb, false, invH, maxPush, slop);
-            change = Math.max(change, contactSolver.lastRelaxChange);
-            used++;
         }
         contactSolver.applyRestitution(sb, settings.getRestitutionThreshold());
         contactSolver.storeImpulses();
         for (int c = 0; c < cn; c++) {
             cs[c].finish(step);
         }
+        continuous.solve(sb, broadPhase, 4f * slop + 0.05f);
         lastSubstep = hh;
         lastIterationCount = used;
         Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);

@@ -1,0 +1,26 @@
+package org.emini.harness.cli;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The harness command line: {@code validate} and {@code run} over scenario files and folders. */
+@Command(name = "harness", mixinStandardHelpOptions = true, version = "emini harness 0.1.0",
+        description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
+        subcommands = {ValidateCommand.class, RunCommand.class, CommandLine.HelpCommand.class})
+public final class Main implements Runnable {
+
+    @Override
+    public void run() {
+        new CommandLine(this).usage(System.out);
+    }
+
+    /** Runs the command line and exits with its status. */
+    public static void main(String[] args) {
+        System.exit(execute(args));
+    }
+
+    /** Runs the command line and returns its exit status (for tests). */
+    public static int execute(String... args) {
+        return new CommandLine(new Main()).execute(args);
+    }
+}

@@ -1,0 +1,232 @@
+package org.emini.harness.expect;
+
+import java.util.Locale;
+import org.emini.harness.closedform.ClosedForm;
+import org.emini.harness.run.Trace;
+import org.emini.harness.scenario.Channels;
+import org.emini.harness.scenario.ExpectationSpec;
+
+/**
+ * Judges expectations on a trace. A figure that is NaN or infinite never passes.
+ */
+public final class Evaluator {
+    private Evaluator() {
+    }
+
+    /**
+     * Judges one expectation.
+     *
+     * @param e the expectation
+     * @param trace the sampled run
+     * @param closedForm the scene's closed form, or null
+     */
+    public static Verdict evaluate(ExpectationSpec e, Trace trace, ClosedForm closedForm) {
+        int[] window = window(e, trace);
+        if (window[0] > window[1]) {
+            return verdict(e, false, Double.NaN, "no sample in the window [" + e.windowFrom() + ", " + e.windowUntil() + "] s");
+        }
+        switch (e.kind()) {
+            case METRIC:
+                return bounded(e, reduce(e, trace.column(e.channel()), trace, window));
+            case CLOSED_FORM:
+                return bounded(e, closedFormError(e, trace, closedForm, window));
+            case ENDS_NEAR: {
+                double x = trace.column(Channels.body(e.body(), "x"))[window[1]];
+                double y = trace.column(Channels.body(e.body(), "y"))[window[1]];
+                double d = Math.hypot(x - e.point()[0], y - e.point()[1]);
+                return verdict(e, d <= e.tolerance(), d, String.format(Locale.ROOT,
+                        "ends at (%s, %s), %s px from the target (tolerance %s)", fmt(x), fmt(y), fmt(d), fmt(e.tolerance())));
+            }
+            case STAYS_INSIDE: {
+                double[] xs = trace.column(Channels.body(e.body(), "x"));
+                double[] ys = trace.column(Channels.body(e.body(), "y"));
+                double worst = 0;
+                for (int i = window[0]; i <= window[1]; i++) {
+                    double out = Math.max(Math.max(e.point()[0] - xs[i], xs[i] - e.max()[0]),
+                            Math.max(e.point()[1] - ys[i], ys[i] - e.max()[1]));
+                    worst = Double.isNaN(out) ? Double.NaN : Math.max(worst, out);
+                }
+                return verdict(e, worst <= 0, worst, worst > 0 || Double.isNaN(worst)
+                        ? "left the region by " + fmt(worst) + " px" : "stayed inside");
+            }
+            case NO_TUNNELLING: {
+                double count = trace.column("tunnelling.count")[window[1]];
+                return verdict(e, count == 0, count, fmt(count) + " wall crossings");
+            }
+            default:
+                return stable(e, trace, window);
+        }
+    }
+
+    private static Verdict stable(ExpectationSpec e, Trace trace, int[] w) {
+        double nonFinite = max(trace.column("stability.nonFinite"), w);
+        if (nonFinite != 0) {
+            return verdict(e, false, nonFinite, "NaN or infinite state in " + fmt(nonFinite) + " bodies");
+        }
+        double speed = max(trace.column("stability.maxSpeed"), w);
+        if (!Double.isNaN(e.maxSpeed()) && !(speed <= e.maxSpeed())) {
+            return verdict(e, false, speed, "speed reached " + fmt(speed) + " px/s > " + fmt(e.maxSpeed()));
+        }
+        double spin = max(trace.column("stability.maxAngularSpeed"), w);
+        if (!Double.isNaN(e.maxAngularSpeed()) && !(spin <= e.maxAngularSpeed())) {
+            return verdict(e, false, spin, "angular speed reached " + fmt(spin) + " rad/s > " + fmt(e.maxAngularSpeed()));
+        }
+        if (!Double.isNaN(e.maxEnergyRise())) {
+            double[] energy = trace.column("energy.total");
+            double rise = max(energy, w) - energy[w[0]];
+            if (!(rise <= e.maxEnergyRise())) {
+                return verdict(e, false, rise, "total energy rose by " + fmt(rise) + " > " + fmt(e.maxEnergyRise()));
+            }
+        }
+        return verdict(e, true, speed, "finite; max speed " + fmt(speed) + " px/s, max |ω| " + fmt(spin) + " rad/s");
+    }
+
+    private static double reduce(ExpectationSpec e, double[] v, Trace trace, int[] w) {
+        if (e.of() == null) {
+            return v[nearest(trace, e.at())];
+        }
+        double initial = v[w[0]];
+        double scale = e.relative() ? Math.abs(initial) : 1;
+        switch (e.of()) {
+            case "final": return v[w[1]];
+            case "initial": return initial;
+            case "max": return max(v, w);
+            case "min": {
+                double m = Double.POSITIVE_INFINITY;
+                for (int i = w[0]; i <= w[1]; i++) {
+                    m = Double.isNaN(v[i]) ? Double.NaN : Math.min(m, v[i]);
+                }
+                return m;
+            }
+            case "mean": {
+                double s = 0;
+                for (int i = w[0]; i <= w[1]; i++) {
+                    s += v[i];
+                }
+                return s / (w[1] - w[0] + 1);
+            }
+            case "maxAbs": {
+                double m = 0;
+                for (int i = w[0]; i <= w[1]; i++) {
+                    m = Double.isNaN(v[i]) ? Double.NaN : Math.max(m, Math.abs(v[i]));
+                }
+                return m;
+            }
+            case "drift": return (v[w[1]] - initial) / scale;
+            case "maxDrift": {
+                double m = 0;
+                for (int i = w[0]; i <= w[1]; i++) {
+                    m = Double.isNaN(v[i]) ? Double.NaN : Math.max(m, Math.abs(v[i] - initial));
+                }
+                return m / scale;
+            }
+            default:
+                throw new IllegalArgumentException("unknown reduction " + e.of());
+        }
+    }
+
+    private static double closedFormError(ExpectationSpec e, Trace trace, ClosedForm model, int[] w) {
+        if (model == null) {
+            return Double.NaN;
+        }
+        double[] v = trace.column(e.channel());
+        double max = 0;
+        double sumSq = 0;
+        int n = 0;
+        double last = Double.NaN;
+        int from = w[0];
+        int until = w[1];
+        if (e.of() == null) {
+            from = until = nearest(trace, e.at());
+        }
+        for (int i = from; i <= until; i++) {
+            double predicted = model.predict(e.channel(), trace.time(i));
+            if (Double.isNaN(predicted)) {
+                continue;
+            }
+            double err = Math.abs(v[i] - predicted);
+            if (Double.isNaN(err)) {
+                return Double.NaN;
+            }
+            max = Math.max(max, err);
+            sumSq += err * err;
+            n++;
+            last = err;
+        }
+        if (n == 0) {
+            return Double.NaN;
+        }
+        if (e.of() == null || e.of().equals("finalError")) {
+            return last;
+        }
+        return e.of().equals("rmsError") ? Math.sqrt(sumSq / n) : max;
+    }
+
+    private static Verdict bounded(ExpectationSpec e, double x) {
+        boolean ok = Double.isFinite(x);
+        StringBuilder bound = new StringBuilder();
+        if (!Double.isNaN(e.atMost())) {
+            ok &= x <= e.atMost();
+            bound.append(" ≤ ").append(fmt(e.atMost()));
+        }
+        if (!Double.isNaN(e.atLeast())) {
+            ok &= x >= e.atLeast();
+            bound.append(" ≥ ").append(fmt(e.atLeast()));
+        }
+        if (!Double.isNaN(e.near())) {
+            ok &= Math.abs(x - e.near()) <= e.tolerance();
+            bound.append(" within ").append(fmt(e.tolerance())).append(" of ").append(fmt(e.near()));
+        }
+        return verdict(e, ok, x, "measured " + fmt(x) + ", expected" + bound);
+    }
+
+    private static double max(double[] v, int[] w) {
+        double m = Double.NEGATIVE_INFINITY;
+        for (int i = w[0]; i <= w[1]; i++) {
+            m = Double.isNaN(v[i]) ? Double.NaN : Math.max(m, v[i]);
+        }
+        return m;
+    }
+
+    private static int nearest(Trace trace, double t) {
+        int best = 0;
+        for (int i = 1; i < trace.size(); i++) {
+            if (Math.abs(trace.time(i) - t) < Math.abs(trace.time(best) - t)) {
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    /** Indices of the first and last samples inside the expectation's window (first &gt; last if none). */
+    private static int[] window(ExpectationSpec e, Trace trace) {
+        int first = -1;
+        int last = -2;
+        double eps = trace.timestep() * 1e-6;
+        for (int i = 0; i < trace.size(); i++) {
+            double t = trace.time(i);
+            if (t >= e.windowFrom() - eps && t <= e.windowUntil() + eps) {
+                if (first < 0) {
+                    first = i;
+                }
+                last = i;
+            }
+        }
+        return first < 0 ? new int[] {0, -1} : new int[] {first, last};
+    }
+
+    private static Verdict verdict(ExpectationSpec e, boolean ok, double measured, String detail) {
+        return new Verdict(e.describe(), ok && !Double.isNaN(measured), measured, detail, e.knownFailure());
+    }
+
+    /** Formats a figure with 4 significant digits. */
+    public static String fmt(double v) {
+        if (Double.isNaN(v) || Double.isInfinite(v)) {
+            return Double.toString(v);
+        }
+        if (v == Math.rint(v) && Math.abs(v) < 1e9) {
+            return Long.toString((long) v);
+        }
+        return String.format(Locale.ROOT, "%.4g", v);
+    }
+}

@@ -1,0 +1,41 @@
+package org.emini.harness.load;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+
+/** Expands the PATHS of a command (files and folders) into scene files, sorted within each folder. */
+public final class ScenarioFiles {
+    private ScenarioFiles() {
+    }
+
+    /** Whether a file name is a scene (YAML or JSON, but not the schema). */
+    public static boolean isScene(Path file) {
+        String n = file.getFileName().toString();
+        return (n.endsWith(".yaml") || n.endsWith(".yml") || n.endsWith(".json")) && !n.endsWith(".schema.json");
+    }
+
+    /**
+     * The scene files under the given paths. A named file is taken as it is (a typo is reported by the
+     * loader); folders are searched recursively.
+     */
+    public static List<Path> expand(List<Path> paths) {
+        List<Path> out = new ArrayList<>();
+        for (Path p : paths) {
+            if (Files.isDirectory(p)) {
+                try (Stream<Path> walk = Files.walk(p)) {
+                    walk.filter(Files::isRegularFile).filter(ScenarioFiles::isScene).sorted().forEach(out::add);
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
+                }
+            } else {
+                out.add(p);
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,542 @@
+package org.emini.harness.load;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.emini.harness.generate.Generators;
+import org.emini.harness.scenario.ActionSpec;
+import org.emini.harness.scenario.BodySpec;
+import org.emini.harness.scenario.BodyState;
+import org.emini.harness.scenario.Channels;
+import org.emini.harness.scenario.ExpectationSpec;
+import org.emini.harness.scenario.GeneratorSpec;
+import org.emini.harness.scenario.KnownFailure;
+import org.emini.harness.scenario.MetricSpec;
+import org.emini.harness.scenario.RecordSpec;
+import org.emini.harness.scenario.RunSpec;
+import org.emini.harness.scenario.Scenario;
+import org.emini.harness.scenario.Section;
+import org.emini.harness.scenario.ShapeSpec;
+import org.emini.harness.scenario.WorldSpec;
+
+/**
+ * Turns a schema-valid document into a {@link Scenario}: fills in the manual's defaults, resolves shape
+ * and body names, expands generators and checks what a schema cannot (mutually exclusive keys, names
+ * that must exist, channels that must be known). Every problem is located through the source map.
+ */
+final class ScenarioReader {
+    /** Top-level elements kept as written and built by their own builders. */
+    static final List<String> ELEMENT_SECTIONS = List.of("joints", "springs", "motors", "landscape", "particles");
+
+    private final String file;
+    private final SourceMap sourceMap;
+    private final List<Problem> problems = new ArrayList<>();
+    private final Map<String, ShapeSpec> shapes = new LinkedHashMap<>();
+
+    ScenarioReader(String file, SourceMap sourceMap) {
+        this.file = file;
+        this.sourceMap = sourceMap;
+    }
+
+    List<Problem> problems() {
+        return problems;
+    }
+
+    /** Reads the scene; returns null when there are problems. */
+    Scenario read(JsonNode root, String defaultName) {
+        JsonPath r = JsonPath.ROOT;
+        String name = root.has("name") ? root.get("name").asText() : defaultName;
+        WorldSpec world = world(root.get("world"), r.key("world"));
+        JsonNode shapesNode = root.get("shapes");
+        if (shapesNode != null) {
+            shapesNode.fields().forEachRemaining(e -> {
+                JsonPath p = r.key("shapes").key(e.getKey());
+                shapes.put(e.getKey(), shape(e.getKey(), e.getValue(), p));
+            });
+        }
+        List<BodySpec> bodies = new ArrayList<>();
+        JsonNode bodiesNode = root.get("bodies");
+        if (bodiesNode != null) {
+            for (int i = 0; i < bodiesNode.size(); i++) {
+                JsonNode b = bodiesNode.get(i);
+                JsonPath p = r.key("bodies").index(i);
+                ShapeSpec shape = shapeRef(b.get("shape"), p.key("shape"));
+                double[] pos = vec(b.get("position"), 0, 0);
+                String bodyName = b.has("name") ? b.get("name").asText() : "body" + i;
+                bodies.add(new BodySpec(bodyName, shape, pos[0], pos[1], state(b, p), p));
+            }
+        }
+        JsonNode generators = root.get("generators");
+        if (generators != null) {
+            for (int i = 0; i < generators.size(); i++) {
+                GeneratorSpec g = generator(generators.get(i), r.key("generators").index(i));
+                if (g != null) {
+                    bodies.addAll(Generators.expand(g));
+                }
+            }
+        }
+        Set<String> names = new HashSet<>();
+        for (BodySpec b : bodies) {
+            if (!names.add(b.name())) {
+                problem(b.path(), "duplicate body name '" + b.name() + "'");
+            }
+        }
+        List<ActionSpec> actions = actions(root.get("actions"), r.key("actions"), names);
+        Map<String, Section> elements = new LinkedHashMap<>();
+        for (String section : ELEMENT_SECTIONS) {
+            if (root.has(section)) {
+                elements.put(section, new Section(root.get(section), r.key(section)));
+                checkBodyRefs(root.get(section), r.key(section), names);
+            }
+        }
+        JsonNode worldNode = root.get("world");
+        if (worldNode != null && worldNode.has("simulationArea")) {
+            elements.put("world.simulationArea", new Section(worldNode.get("simulationArea"),
+                    r.key("world").key("simulationArea")));
+        }
+        Section closedForm = null;
+        Section oracle = null;
+        JsonNode reference = root.get("reference");
+        if (reference != null) {
+            if (reference.has("closedForm")) {
+                closedForm = new Section(reference.get("closedForm"), r.key("reference").key("closedForm"));
+                checkBodyRefs(reference.get("closedForm"), closedForm.path(), names);
+            }
+            if (reference.has("oracle")) {
+                oracle = new Section(reference.get("oracle"), r.key("reference").key("oracle"));
+            }
+        }
+        RunSpec run = run(root.get("run"), r.key("run"), names, closedForm != null);
+        KnownFailure known = knownFailure(root.get("knownFailure"));
+        String description = root.has("description") ? root.get("description").asText() : "";
+        String category = root.has("category") ? root.get("category").asText() : null;
+        if (!problems.isEmpty()) {
+            return null;
+        }
+        return new Scenario(name, file, description, category, world, shapes, bodies, actions, elements, run,
+                closedForm, oracle, known);
+    }
+
+    private WorldSpec world(JsonNode w, JsonPath p) {
+        WorldSpec d = WorldSpec.DEFAULT;
+        if (w == null) {
+            return d;
+        }
+        if (w.has("ticksPerSecond") && w.has("timestep")) {
+            problem(p.key("timestep"), "give ticksPerSecond or timestep, not both");
+        }
+        double timestep = w.has("timestep") ? w.get("timestep").asDouble()
+                : w.has("ticksPerSecond") ? 1.0 / w.get("ticksPerSecond").asDouble() : d.timestep();
+        double[] g = vec(w.get("gravity"), d.gravityX(), d.gravityY());
+        JsonNode damping = w.get("damping");
+        Map<String, Double> solver = new LinkedHashMap<>();
+        if (w.has("solver")) {
+            w.get("solver").fields().forEachRemaining(e -> solver.put(e.getKey(), e.getValue().asDouble()));
+        }
+        return new WorldSpec(timestep,
+                w.has("iterations") ? w.get("iterations").asInt() : d.iterations(),
+                w.has("dynamicIterations") ? w.get("dynamicIterations").asBoolean() : d.dynamicIterations(),
+                g[0], g[1],
+                damping != null && damping.has("lateral") ? damping.get("lateral").asDouble() : d.dampingLateral(),
+                damping != null && damping.has("rotational") ? damping.get("rotational").asDouble()
+                        : d.dampingRotational(),
+                w.has("simulationArea"), solver);
+    }
+
+    private ShapeSpec shapeRef(JsonNode node, JsonPath p) {
+        if (node.isTextual()) {
+            ShapeSpec s = shapes.get(node.asText());
+            if (s == null) {
+                problem(p, "no shape named '" + node.asText() + "' under shapes" + known(shapes.keySet()));
+            }
+            return s;
+        }
+        return shape(null, node, p);
+    }
+
+    private ShapeSpec shape(String name, JsonNode s, JsonPath p) {
+        ShapeSpec.Kind kind = ShapeSpec.Kind.valueOf(s.get("type").asText());
+        List<double[]> vertices = new ArrayList<>();
+        if (s.has("vertices")) {
+            for (JsonNode v : s.get("vertices")) {
+                vertices.add(vec(v, 0, 0));
+            }
+        }
+        List<ShapeSpec.Part> parts = new ArrayList<>();
+        if (s.has("parts")) {
+            for (int i = 0; i < s.get("parts").size(); i++) {
+                JsonNode part = s.get("parts").get(i);
+                double[] off = vec(part.get("offset"), 0, 0);
+                parts.add(new ShapeSpec.Part(shapeRef(part.get("shape"), p.key("parts").index(i).key("shape")),
+                        off[0], off[1], num(part, "angle", 0)));
+            }
+        }
+        double defaultMass = 1;
+        if (kind == ShapeSpec.Kind.multiShape) {
+            defaultMass = 0;
+            for (ShapeSpec.Part part : parts) {
+                defaultMass += part.shape() == null ? 0 : part.shape().mass();
+            }
+        }
+        return new ShapeSpec(name, kind, num(s, "radius", 0), num(s, "width", 0), num(s, "height", 0),
+                s.has("sides") ? s.get("sides").asInt() : 0, vertices, parts, num(s, "mass", defaultMass),
+                num(s, "friction", 0.25), num(s, "elasticity", 0), p);
+    }
+
+    private BodyState state(JsonNode b, JsonPath p) {
+        if (b == null) {
+            return BodyState.DEFAULT;
+        }
+        if (b.has("angle") && b.has("angleDeg")) {
+            problem(p.key("angleDeg"), "give angle or angleDeg, not both");
+        }
+        double angle = b.has("angleDeg") ? Math.toRadians(b.get("angleDeg").asDouble()) : num(b, "angle", 0);
+        double[] v = vec(b.get("velocity"), 0, 0);
+        List<Integer> layers = new ArrayList<>();
+        if (b.has("layers")) {
+            b.get("layers").forEach(l -> layers.add(l.asInt()));
+        }
+        return new BodyState(bool(b, "static", false), angle, v[0], v[1], num(b, "angularVelocity", 0),
+                bool(b, "rotatable", true), bool(b, "interacting", true), bool(b, "gravity", true),
+                List.copyOf(layers));
+    }
+
+    private GeneratorSpec generator(JsonNode g, JsonPath p) {
+        GeneratorSpec.Kind kind = GeneratorSpec.Kind.valueOf(g.get("type").asText());
+        List<ShapeSpec> list = new ArrayList<>();
+        if (g.has("shape")) {
+            list.add(shapeRef(g.get("shape"), p.key("shape")));
+        }
+        if (g.has("shapes")) {
+            for (int i = 0; i < g.get("shapes").size(); i++) {
+                list.add(shapeRef(g.get("shapes").get(i), p.key("shapes").index(i)));
+            }
+        }
+        if (list.contains(null)) {
+            return null;
+        }
+        double[] spacing = null;
+        if (g.has("spacing")) {
+            JsonNode s = g.get("spacing");
+            spacing = s.isNumber() ? new double[] {s.asDouble()} : vec(s, 0, 0);
+        } else if (kind != GeneratorSpec.Kind.rain && list.get(0).size() == null) {
+            problem(p, "give spacing: the default spacing needs a shape with a known size");
+            return null;
+        }
+        JsonNode anchor = g.has("base") ? g.get("base") : g.has("origin") ? g.get("origin") : g.get("start");
+        JsonNode region = g.get("region");
+        return new GeneratorSpec(kind, g.get("name").asText(), list, vec(anchor, 0, 0),
+                g.has("count") ? g.get("count").asInt() : 0, g.has("rows") ? g.get("rows").asInt() : 0,
+                g.has("columns") ? g.get("columns").asInt() : 0, spacing,
+                region != null ? vec(region.get("min"), 0, 0) : null,
+                region != null ? vec(region.get("max"), 0, 0) : null,
+                g.has("seed") ? g.get("seed").asLong() : 0, bool(g, "randomAngle", false),
+                state(g.get("body"), p.key("body")), p);
+    }
+
+    private List<ActionSpec> actions(JsonNode list, JsonPath p, Set<String> names) {
+        List<ActionSpec> out = new ArrayList<>();
+        if (list == null) {
+            return out;
+        }
+        for (int i = 0; i < list.size(); i++) {
+            JsonNode a = list.get(i);
+            JsonPath ap = p.index(i);
+            ActionSpec.Kind kind = ActionSpec.Kind.valueOf(a.get("type").asText());
+            String body = a.has("body") ? a.get("body").asText() : null;
+            if (body != null && !names.contains(body)) {
+                problem(ap.key("body"), "no body named '" + body + "'");
+            }
+            double[] vector = null;
+            double value = Double.NaN;
+            switch (kind) {
+                case impulse:
+                    vector = vec(a.get("impulse"), 0, 0);
+                    break;
+                case force:
+                    vector = vec(a.get("force"), 0, 0);
+                    break;
+                case gravity:
+                    vector = vec(a.get("gravity"), 0, 0);
+                    break;
+                case velocity:
+                    vector = a.has("velocity") ? vec(a.get("velocity"), 0, 0) : null;
+                    value = num(a, "angularVelocity", Double.NaN);
+                    if (vector == null && Double.isNaN(value)) {
+                        problem(ap, "give velocity, angularVelocity or both");
+                    }
+                    break;
+                case torque:
+                    value = a.get("torque").asDouble();
+                    break;
+                default:
+                    value = a.get("angularImpulse").asDouble();
+                    break;
+            }
+            out.add(new ActionSpec(a.get("at").asDouble(), kind, body, vector,
+                    a.has("point") ? vec(a.get("point"), 0, 0) : null, value, num(a, "duration", Double.NaN), ap));
+        }
+        return out;
+    }
+
+    private RunSpec run(JsonNode run, JsonPath p, Set<String> names, boolean hasClosedForm) {
+        JsonNode rec = run.get("record");
+        JsonPath rp = p.key("record");
+        Map<MetricSpec.Kind, MetricSpec> metrics = new LinkedHashMap<>();
+        String bodies = "all";
+        List<String> bodyNames = new ArrayList<>();
+        if (rec != null && rec.has("metrics")) {
+            JsonNode list = rec.get("metrics");
+            for (int i = 0; i < list.size(); i++) {
+                MetricSpec m = metric(list.get(i), rp.key("metrics").index(i), names);
+                if (metrics.put(m.kind(), m) != null) {
+                    problem(m.path(), "metric '" + m.kind() + "' is listed twice");
+                }
+            }
+        }
+        if (rec != null && rec.has("bodies")) {
+            JsonNode b = rec.get("bodies");
+            if (b.isTextual()) {
+                bodies = b.asText();
+            } else {
+                bodies = null;
+                for (int i = 0; i < b.size(); i++) {
+                    String n = b.get(i).asText();
+                    if (!names.contains(n)) {
+                        problem(rp.key("bodies").index(i), "no body named '" + n + "'");
+                    }
+                    bodyNames.add(n);
+                }
+            }
+        }
+        List<ExpectationSpec> expect = new ArrayList<>();
+        JsonNode list = run.get("expect");
+        if (list != null) {
+            for (int i = 0; i < list.size(); i++) {
+                ExpectationSpec e = expectation(list.get(i), p.key("expect").index(i), names, hasClosedForm);
+                if (e == null) {
+                    continue;
+                }
+                expect.add(e);
+                // An expectation is a request: add the metrics it needs (without options).
+                MetricSpec.Kind needed = neededMetric(e);
+                if (needed == MetricSpec.Kind.tunnelling && !metrics.containsKey(needed)) {
+                    problem(e.path(), "noTunnelling needs the tunnelling metric with its walls under run.record.metrics");
+                } else if (needed != null && !metrics.containsKey(needed)) {
+                    metrics.put(needed, MetricSpec.plain(needed, null));
+                }
+                if (e.kind() == ExpectationSpec.Kind.STABLE && !Double.isNaN(e.maxEnergyRise())
+                        && !metrics.containsKey(MetricSpec.Kind.energy)) {
+                    metrics.put(MetricSpec.Kind.energy, MetricSpec.plain(MetricSpec.Kind.energy, null));
+                }
+                if (e.body() != null && bodies == null && !bodyNames.contains(e.body())) {
+                    bodyNames.add(e.body());
+                }
+                String[] bc = e.channel() != null ? Channels.bodyChannel(e.channel()) : null;
+                if (bc != null && bodies == null && !bodyNames.contains(bc[0])) {
+                    bodyNames.add(bc[0]);
+                }
+            }
+        }
+        double every = rec != null && rec.has("every") ? rec.get("every").asDouble() : Double.NaN;
+        boolean trace = rec == null || bool(rec, "trace", true);
+        RecordSpec record = new RecordSpec(every, List.copyOf(metrics.values()), bodies, bodyNames, trace);
+        return new RunSpec(run.get("duration").asDouble(), record, expect);
+    }
+
+    private MetricSpec metric(JsonNode m, JsonPath p, Set<String> names) {
+        if (m.isTextual()) {
+            return MetricSpec.plain(MetricSpec.Kind.valueOf(m.asText()), p);
+        }
+        String key = m.fieldNames().next();
+        JsonNode o = m.get(key);
+        JsonPath op = p.key(key);
+        MetricSpec.Kind kind = MetricSpec.Kind.valueOf(key);
+        double[] about = vec(o.get("about"), 0, 0);
+        List<MetricSpec.WallSpec> walls = new ArrayList<>();
+        List<String> bodies = new ArrayList<>();
+        if (o.has("walls")) {
+            for (int i = 0; i < o.get("walls").size(); i++) {
+                JsonNode w = o.get("walls").get(i);
+                if (w.isTextual()) {
+                    if (!names.contains(w.asText())) {
+                        problem(op.key("walls").index(i), "no body named '" + w.asText() + "'");
+                    }
+                    walls.add(new MetricSpec.WallSpec(w.asText(), null, null));
+                } else {
+                    walls.add(new MetricSpec.WallSpec(null, vec(w.get("from"), 0, 0), vec(w.get("to"), 0, 0)));
+                }
+            }
+        }
+        if (o.has("bodies")) {
+            for (int i = 0; i < o.get("bodies").size(); i++) {
+                String n = o.get("bodies").get(i).asText();
+                if (!names.contains(n)) {
+                    problem(op.key("bodies").index(i), "no body named '" + n + "'");
+                }
+                bodies.add(n);
+            }
+        }
+        return new MetricSpec(kind, about[0], about[1], walls, bodies, p);
+    }
+
+    private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm) {
+        List<String> kinds = new ArrayList<>();
+        for (String k : List.of("metric", "closedForm", "endsNear", "staysInside", "noTunnelling", "stable")) {
+            if (e.has(k)) {
+                kinds.add(k);
+            }
+        }
+        if (kinds.size() != 1) {
+            problem(p, kinds.isEmpty()
+                    ? "an expectation needs one of metric, closedForm, endsNear, staysInside, noTunnelling, stable"
+                    : "an expectation checks one thing; found " + String.join(", ", kinds));
+            return null;
+        }
+        String k = kinds.get(0);
+        ExpectationSpec.Kind kind = switch (k) {
+            case "metric" -> ExpectationSpec.Kind.METRIC;
+            case "closedForm" -> ExpectationSpec.Kind.CLOSED_FORM;
+            case "endsNear" -> ExpectationSpec.Kind.ENDS_NEAR;
+            case "staysInside" -> ExpectationSpec.Kind.STAYS_INSIDE;
+            case "noTunnelling" -> ExpectationSpec.Kind.NO_TUNNELLING;
+            default -> ExpectationSpec.Kind.STABLE;
+        };
+        String channel = null;
+        String of = e.has("of") ? e.get("of").asText() : null;
+        double at = num(e, "at", Double.NaN);
+        double atMost = num(e, "atMost", Double.NaN);
+        double atLeast = num(e, "atLeast", Double.NaN);
+        double near = num(e, "near", Double.NaN);
+        double tolerance = num(e, "tolerance", Double.NaN);
+        boolean bounded = !Double.isNaN(atMost) || !Double.isNaN(atLeast) || !Double.isNaN(near);
+        if (!Double.isNaN(near) && Double.isNaN(tolerance)) {
+            problem(p.key("near"), "near needs a tolerance");
+        }
+        String body = e.has("body") ? e.get("body").asText() : null;
+        if (body != null && !names.contains(body)) {
+            problem(p.key("body"), "no body named '" + body + "'");
+        }
+        if (kind == ExpectationSpec.Kind.METRIC || kind == ExpectationSpec.Kind.CLOSED_FORM) {
+            channel = e.get(k).asText();
+            JsonPath cp = p.key(k);
+            String[] bc = Channels.bodyChannel(channel);
+            if (bc == null && Channels.metricOf(channel) == null) {
+                problem(cp, "unknown channel '" + channel + "' (see scenarios/README.md, Metrics)");
+            } else if (bc != null && !names.contains(bc[0])) {
+                problem(cp, "no body named '" + bc[0] + "'");
+            }
+            if ((of == null) == Double.isNaN(at)) {
+                problem(p, "give `of` or `at`, one of them");
+            }
+            boolean errorOf = of != null && of.endsWith("Error");
+            if (kind == ExpectationSpec.Kind.CLOSED_FORM) {
+                if (!hasClosedForm) {
+                    problem(cp, "a closedForm expectation needs reference.closedForm");
+                }
+                if (of != null && !errorOf) {
+                    problem(p.key("of"), "a closedForm expectation reduces with maxError, finalError or rmsError");
+                }
+            } else if (errorOf) {
+                problem(p.key("of"), of + " compares with the closed form: use `closedForm:` instead of `metric:`");
+            }
+            if (!bounded) {
+                problem(p, "give atMost, atLeast or near with tolerance");
+            }
+        } else {
+            if (e.has("of") || e.has("at") || e.has("relative")) {
+                problem(p, "of, at and relative belong to metric and closedForm expectations");
+            }
+        }
+        double[] point = null;
+        double[] max = null;
+        if (kind == ExpectationSpec.Kind.ENDS_NEAR || kind == ExpectationSpec.Kind.STAYS_INSIDE) {
+            if (body == null) {
+                problem(p, k + " needs a body");
+            }
+            if (kind == ExpectationSpec.Kind.ENDS_NEAR) {
+                point = vec(e.get("endsNear"), 0, 0);
+                if (Double.isNaN(tolerance)) {
+                    problem(p, "endsNear needs a tolerance (px)");
+                }
+            } else {
+                point = vec(e.get("staysInside").get("min"), 0, 0);
+                max = vec(e.get("staysInside").get("max"), 0, 0);
+            }
+        } else if (body != null) {
+            problem(p.key("body"), "body belongs to endsNear and staysInside expectations");
+        }
+        double[] window = e.has("window") ? vec(e.get("window"), 0, 0) : new double[] {0, Double.POSITIVE_INFINITY};
+        JsonNode stable = e.get("stable");
+        return new ExpectationSpec(kind, channel, of, at, bool(e, "relative", false), body, point, max, atMost,
+                atLeast, near, tolerance, window[0], window[1],
+                stable != null ? num(stable, "maxSpeed", Double.NaN) : Double.NaN,
+                stable != null ? num(stable, "maxAngularSpeed", Double.NaN) : Double.NaN,
+                stable != null ? num(stable, "maxEnergyRise", Double.NaN) : Double.NaN,
+                e.has("name") ? e.get("name").asText() : null, e.has("why") ? e.get("why").asText() : null,
+                knownFailure(e.get("knownFailure")), p);
+    }
+
+    private static MetricSpec.Kind neededMetric(ExpectationSpec e) {
+        switch (e.kind()) {
+            case METRIC:
+            case CLOSED_FORM:
+                return Channels.metricOf(e.channel());
+            case NO_TUNNELLING:
+                return MetricSpec.Kind.tunnelling;
+            case STABLE:
+                return MetricSpec.Kind.stability;
+            default:
+                return null;
+        }
+    }
+
+    private void checkBodyRefs(JsonNode node, JsonPath p, Set<String> names) {
+        // Elements refer to bodies through these keys; a wrong name is caught before any builder runs.
+        if (node.isArray()) {
+            for (int i = 0; i < node.size(); i++) {
+                checkBodyRefs(node.get(i), p.index(i), names);
+            }
+        } else if (node.isObject()) {
+            for (String key : List.of("body", "bodyA", "bodyB")) {
+                JsonNode v = node.get(key);
+                if (v != null && v.isTextual() && !names.contains(v.asText())) {
+                    problem(p.key(key), "no body named '" + v.asText() + "'");
+                }
+            }
+        }
+    }
+
+    private static KnownFailure knownFailure(JsonNode k) {
+        if (k == null) {
+            return null;
+        }
+        return new KnownFailure(k.get("reason").asText(), k.get("measured").asText(),
+                k.has("issue") ? k.get("issue").asText() : null);
+    }
+
+    private static double[] vec(JsonNode v, double dx, double dy) {
+        return v == null ? new double[] {dx, dy} : new double[] {v.get(0).asDouble(), v.get(1).asDouble()};
+    }
+
+    private static double num(JsonNode o, String key, double dflt) {
+        return o.has(key) ? o.get(key).asDouble() : dflt;
+    }
+
+    private static boolean bool(JsonNode o, String key, boolean dflt) {
+        return o.has(key) ? o.get(key).asBoolean() : dflt;
+    }
+
+    private static String known(Set<String> names) {
+        return names.isEmpty() ? "" : " (known: " + String.join(", ", names) + ")";
+    }
+
+    private void problem(JsonPath path, String message) {
+        int[] at = sourceMap.locate(path);
+        problems.add(new Problem(file, at[0], at[1], path.toString(), message));
+    }
+}

@@ -1,0 +1,38 @@
+package org.emini.harness.metrics;
+
+import org.emini.harness.build.BuiltWorld;
+import org.emini.harness.build.UnsupportedElementException;
+import org.emini.harness.load.JsonPath;
+import org.emini.harness.scenario.MetricSpec;
+
+/** Creates the metric a scene requests; only requested metrics exist, so only they cost time. */
+public final class Metrics {
+    private Metrics() {
+    }
+
+    /**
+     * The metric for a request.
+     *
+     * @throws UnsupportedElementException for a metric the engine cannot feed yet (constraint error:
+     *     the engine has no joints or springs)
+     */
+    public static Metric create(MetricSpec spec, BuiltWorld world) throws UnsupportedElementException {
+        switch (spec.kind()) {
+            case energy:
+                return new EnergyMetric(world);
+            case linearMomentum:
+                return new LinearMomentumMetric(world);
+            case angularMomentum:
+                return new AngularMomentumMetric(world, spec.aboutX(), spec.aboutY());
+            case penetration:
+                return new PenetrationMetric(world.world());
+            case tunnelling:
+                return new TunnellingMetric(world, spec);
+            case stability:
+                return new StabilityMetric(world);
+            default:
+                throw new UnsupportedElementException("metric " + spec.kind(),
+                        spec.path() != null ? spec.path() : JsonPath.ROOT.key("run"));
+        }
+    }
+}

@@ -1,0 +1,103 @@
+package org.emini.harness.report;
+
+import com.google.gson.stream.JsonWriter;
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.emini.harness.run.Trace;
+import org.emini.harness.scenario.Channels;
+
+/**
+ * Writes a trace as JSON in the format of harness/README.md (Trace format): columns per body quantity
+ * and per metric channel, NaN and infinities as null. The Python oracle (issue 6) writes the same
+ * format, so its traces and ours compare column by column.
+ */
+public final class TraceWriter {
+    /** Version of the trace format; bump on any incompatible change. */
+    public static final int VERSION = 1;
+
+    private TraceWriter() {
+    }
+
+    /** The trace file name of a scene: its id with '/' kept as folders. */
+    public static Path fileFor(Path tracesDir, String scene) {
+        return tracesDir.resolve(scene + ".trace.json");
+    }
+
+    /**
+     * Writes a trace.
+     *
+     * @param file the file (folders are created)
+     * @param scene the scene id
+     * @param source who produced it ({@code emini}; the oracle writes {@code pymunk})
+     * @param trace the samples
+     */
+    public static void write(Path file, String scene, String source, Trace trace) throws IOException {
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        try (Writer out = new BufferedWriter(Files.newBufferedWriter(file, StandardCharsets.UTF_8), 1 << 16)) {
+            write(out, scene, source, trace);
+        }
+    }
+
+    /** Writes a trace to a stream. */
+    public static void write(Writer out, String scene, String source, Trace trace) throws IOException {
+        JsonWriter json = new JsonWriter(out);
+        json.beginObject();
+        json.name("format").value("emini-trace");
+        json.name("version").value(VERSION);
+        json.name("scene").value(scene);
+        json.name("source").value(source);
+        json.name("timestep").value(trace.timestep());
+        json.name("tick").beginArray();
+        for (int i = 0; i < trace.size(); i++) {
+            json.value(trace.tick(i));
+        }
+        json.endArray();
+        json.name("time").beginArray();
+        for (int i = 0; i < trace.size(); i++) {
+            number(json, trace.time(i), false);
+        }
+        json.endArray();
+        json.name("bodies").beginObject();
+        for (String body : trace.bodies()) {
+            json.name(body).beginObject();
+            for (String field : Trace.BODY_FIELDS) {
+                json.name(field);
+                column(json, trace.column(Channels.body(body, field)), true);
+            }
+            json.endObject();
+        }
+        json.endObject();
+        json.name("metrics").beginObject();
+        for (String channel : trace.metricChannels()) {
+            json.name(channel);
+            column(json, trace.column(channel), false);
+        }
+        json.endObject();
+        json.endObject();
+        json.flush();
+    }
+
+    private static void column(JsonWriter json, double[] values, boolean singlePrecision) throws IOException {
+        json.beginArray();
+        for (double v : values) {
+            number(json, v, singlePrecision);
+        }
+        json.endArray();
+    }
+
+    // Body state comes from the engine's floats: print it at float precision (shortest float text),
+    // which is exact and about half the size of the double's 17 digits.
+    private static void number(JsonWriter json, double v, boolean singlePrecision) throws IOException {
+        if (!Double.isFinite(v)) {
+            json.nullValue();
+        } else if (singlePrecision) {
+            json.value(Float.valueOf((float) v));
+        } else {
+            json.value(v);
+        }
+    }
+}

@@ -1,0 +1,167 @@
+package org.emini.harness.run;
+
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.LongConsumer;
+import org.emini.dynamics.Body;
+import org.emini.dynamics.World;
+import org.emini.harness.build.BuiltWorld;
+import org.emini.harness.build.UnsupportedElementException;
+import org.emini.harness.build.WorldBuilder;
+import org.emini.harness.closedform.ClosedForm;
+import org.emini.harness.closedform.ClosedForms;
+import org.emini.harness.expect.Evaluator;
+import org.emini.harness.expect.Verdict;
+import org.emini.harness.metrics.Metric;
+import org.emini.harness.metrics.Metrics;
+import org.emini.harness.scenario.BodySpec;
+import org.emini.harness.scenario.Channels;
+import org.emini.harness.scenario.ExpectationSpec;
+import org.emini.harness.scenario.MetricSpec;
+import org.emini.harness.scenario.RecordSpec;
+import org.emini.harness.scenario.Scenario;
+
+/**
+ * Runs one scene: builds the world, ticks it for the run's duration applying scheduled actions,
+ * samples the requested bodies and metrics, then judges the expectations.
+ */
+public final class ScenarioRunner {
+    private ScenarioRunner() {
+    }
+
+    /**
+     * Runs a scene. Never throws for a problem of the scene or the engine: those become the result's
+     * status (unsupported, error).
+     *
+     * @param scenario the scene
+     * @param progress told how many ticks were just done (may be called often; cheap callbacks only)
+     */
+    public static SceneResult run(Scenario scenario, LongConsumer progress) {
+        long ticks = scenario.ticks();
+        long t0 = System.nanoTime();
+        BuiltWorld built;
+        List<Metric> metrics = new ArrayList<>();
+        try {
+            built = WorldBuilder.build(scenario);
+            for (MetricSpec m : scenario.run().record().metrics()) {
+                metrics.add(Metrics.create(m, built));
+            }
+        } catch (UnsupportedElementException e) {
+            progress.accept(ticks);
+            return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null);
+        } catch (RuntimeException e) {
+            progress.accept(ticks);
+            return errorOrKnown(scenario, "building the world: " + e, 0, 0);
+        }
+        long t1 = System.nanoTime();
+        List<String> recorded = recordedBodies(scenario, built);
+        List<String> metricChannels = new ArrayList<>();
+        metrics.forEach(m -> metricChannels.addAll(m.channels()));
+        Trace trace = new Trace(scenario.world().timestep(), recorded, metricChannels);
+        Body[] bodies = recorded.stream().map(built::body).toArray(Body[]::new);
+        World world = built.world();
+        Schedule schedule = new Schedule(built, scenario.actions(), scenario.world().timestep());
+        long every = samplingTicks(scenario.run().record(), scenario.world().timestep());
+        long done = 0;
+        try {
+            sample(trace, 0, bodies, metrics);
+            for (long k = 0; k < ticks; k++) {
+                schedule.beforeTick(k);
+                world.tick();
+                for (Metric m : metrics) {
+                    m.afterTick();
+                }
+                if ((k + 1) % every == 0 || k + 1 == ticks) {
+                    sample(trace, k + 1, bodies, metrics);
+                }
+                if ((k & 63) == 63) {
+                    progress.accept(64);
+                    done += 64;
+                }
+            }
+        } catch (RuntimeException e) {
+            progress.accept(ticks - done);
+            return errorOrKnown(scenario, "at tick " + world.getTickCount() + ": " + e, millis(t1 - t0),
+                    millis(System.nanoTime() - t1));
+        }
+        progress.accept(ticks - done);
+        double runMillis = millis(System.nanoTime() - t1);
+        ClosedForm closedForm = ClosedForms.create(scenario, built);
+        List<Verdict> verdicts = new ArrayList<>();
+        for (ExpectationSpec e : scenario.run().expect()) {
+            verdicts.add(Evaluator.evaluate(e, trace, closedForm));
+        }
+        List<String> stale = new ArrayList<>();
+        StringBuilder message = new StringBuilder();
+        Status status = Judge.judge(verdicts, scenario.knownFailure(), stale, message);
+        return result(scenario, status, message.toString(), verdicts, stale, ticks, millis(t1 - t0), runMillis, trace);
+    }
+
+    /** Ticks between samples: the record interval rounded to whole ticks (at least one). */
+    static long samplingTicks(RecordSpec record, double timestep) {
+        return Double.isNaN(record.every()) ? 1 : Math.max(1, Math.round(record.every() / timestep));
+    }
+
+    private static List<String> recordedBodies(Scenario scenario, BuiltWorld built) {
+        Set<String> out = new LinkedHashSet<>();
+        RecordSpec r = scenario.run().record();
+        if (r.bodies() == null) {
+            out.addAll(r.bodyNames());
+        } else if (r.bodies().equals("all")) {
+            out.addAll(built.bodies().keySet());
+        } else if (r.bodies().equals("dynamic")) {
+            for (BodySpec b : scenario.bodies()) {
+                if (!b.state().isStatic()) {
+                    out.add(b.name());
+                }
+            }
+        }
+        // Bodies an expectation reads are always recorded.
+        for (ExpectationSpec e : scenario.run().expect()) {
+            if (e.body() != null) {
+                out.add(e.body());
+            }
+            String[] bc = e.channel() != null ? Channels.bodyChannel(e.channel()) : null;
+            if (bc != null) {
+                out.add(bc[0]);
+            }
+        }
+        return new ArrayList<>(out);
+    }
+
+    private static void sample(Trace trace, long tick, Body[] bodies, List<Metric> metrics) {
+        double[] row = new double[trace.channels().size()];
+        int i = 0;
+        for (Body b : bodies) {
+            row[i++] = b.getX();
+            row[i++] = b.getY();
+            row[i++] = b.getAngle();
+            row[i++] = b.getVelocityX();
+            row[i++] = b.getVelocityY();
+            row[i++] = b.getAngularVelocity();
+        }
+        for (Metric m : metrics) {
+            m.sample(row, i);
+            i += m.channels().size();
+        }
+        trace.add(tick, row);
+    }
+
+    private static SceneResult errorOrKnown(Scenario s, String message, double build, double run) {
+        Status status = s.knownFailure() != null ? Status.KNOWN_FAILURE : Status.ERROR;
+        String text = s.knownFailure() != null ? message + " [known: " + s.knownFailure().reason() + "]" : message;
+        return result(s, status, text, List.of(), List.of(), 0, build, run, null);
+    }
+
+    private static SceneResult result(Scenario s, Status status, String message, List<Verdict> verdicts,
+                                      List<String> stale, long ticks, double build, double run, Trace trace) {
+        return new SceneResult(s.name(), s.file(), s.category(), status, message, verdicts, stale, s.knownFailure(),
+                s.bodies().size(), ticks, s.world().timestep(), build, run, trace);
+    }
+
+    private static double millis(long nanos) {
+        return nanos / 1e6;
+    }
+}

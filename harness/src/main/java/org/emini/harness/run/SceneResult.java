@@ -1,0 +1,39 @@
+package org.emini.harness.run;
+
+import java.util.List;
+import org.emini.harness.expect.Verdict;
+import org.emini.harness.scenario.KnownFailure;
+
+/**
+ * What running one scene gave.
+ *
+ * @param scene the scene id
+ * @param file the scene file
+ * @param category the library category, or null
+ * @param status the verdict
+ * @param message why (unsupported element, error, first regression), or ""
+ * @param verdicts one per expectation, in file order
+ * @param staleKnownFailures expectations marked as known failures that now pass (remove the mark)
+ * @param knownFailure the scene-level mark, or null
+ * @param bodies number of bodies
+ * @param ticks ticks run
+ * @param timestep seconds per tick
+ * @param buildMillis time to build the world
+ * @param runMillis time to run the ticks, including metrics
+ * @param trace the sampled run, or null when nothing ran
+ */
+public record SceneResult(String scene, String file, String category, Status status, String message,
+                          List<Verdict> verdicts, List<String> staleKnownFailures, KnownFailure knownFailure,
+                          int bodies, long ticks, double timestep, double buildMillis, double runMillis, Trace trace) {
+
+    /** Microseconds of wall time per tick (NaN when nothing ran). */
+    public double microsPerTick() {
+        return ticks == 0 ? Double.NaN : runMillis * 1000 / ticks;
+    }
+
+    /** The same result without its trace (after the trace is written, to free memory). */
+    public SceneResult withoutTrace() {
+        return new SceneResult(scene, file, category, status, message, verdicts, staleKnownFailures, knownFailure,
+                bodies, ticks, timestep, buildMillis, runMillis, null);
+    }
+}

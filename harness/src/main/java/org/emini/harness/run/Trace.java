@@ -1,0 +1,123 @@
+package org.emini.harness.run;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.emini.harness.scenario.Channels;
+
+/**
+ * The sampled run: for each sample its tick and time and one value per channel. Channels are the
+ * recorded bodies' quantities ({@code body.NAME.x}, y, angle, vx, vy, omega) followed by the metric
+ * channels. Written to disk by the trace writer in the format of harness/README.md.
+ */
+public final class Trace {
+    /** The per-body quantities stored for every recorded body, in order. */
+    public static final List<String> BODY_FIELDS = List.of("x", "y", "angle", "vx", "vy", "omega");
+
+    private final List<String> bodies;
+    private final List<String> metricChannels;
+    private final List<String> channels = new ArrayList<>();
+    private final Map<String, Integer> index = new HashMap<>();
+    private final List<double[]> rows = new ArrayList<>();
+    private final List<Long> ticks = new ArrayList<>();
+    private final double timestep;
+
+    /**
+     * @param timestep seconds per tick (time of a sample = tick × timestep)
+     * @param bodies names of the recorded bodies
+     * @param metricChannels metric channels, in order
+     */
+    public Trace(double timestep, List<String> bodies, List<String> metricChannels) {
+        this.timestep = timestep;
+        this.bodies = List.copyOf(bodies);
+        this.metricChannels = List.copyOf(metricChannels);
+        for (String b : bodies) {
+            for (String f : BODY_FIELDS) {
+                add(Channels.body(b, f));
+            }
+        }
+        metricChannels.forEach(this::add);
+    }
+
+    private void add(String channel) {
+        index.put(channel, channels.size());
+        channels.add(channel);
+    }
+
+    /** Appends a sample; {@code row} has one value per channel, in channel order. */
+    public void add(long tick, double[] row) {
+        if (row.length != channels.size()) {
+            throw new IllegalArgumentException("row of " + row.length + " values for " + channels.size() + " channels");
+        }
+        ticks.add(tick);
+        rows.add(row);
+    }
+
+    /** Every channel, bodies first. */
+    public List<String> channels() {
+        return Collections.unmodifiableList(channels);
+    }
+
+    /** The recorded bodies. */
+    public List<String> bodies() {
+        return bodies;
+    }
+
+    /** The metric channels. */
+    public List<String> metricChannels() {
+        return metricChannels;
+    }
+
+    /** Seconds per tick. */
+    public double timestep() {
+        return timestep;
+    }
+
+    /** Number of samples. */
+    public int size() {
+        return rows.size();
+    }
+
+    /** The tick of sample i. */
+    public long tick(int i) {
+        return ticks.get(i);
+    }
+
+    /** The time of sample i (s). */
+    public double time(int i) {
+        return ticks.get(i) * timestep;
+    }
+
+    /** Whether a channel (including the derived {@code body.NAME.speed}) can be read. */
+    public boolean has(String channel) {
+        if (index.containsKey(channel)) {
+            return true;
+        }
+        String[] bc = Channels.bodyChannel(channel);
+        return bc != null && bc[1].equals("speed") && index.containsKey(Channels.body(bc[0], "vx"));
+    }
+
+    /** The values of a channel over the samples; body.NAME.speed is derived from vx and vy. */
+    public double[] column(String channel) {
+        Integer c = index.get(channel);
+        double[] out = new double[rows.size()];
+        if (c == null) {
+            String[] bc = Channels.bodyChannel(channel);
+            if (bc == null || !bc[1].equals("speed") || !index.containsKey(Channels.body(bc[0], "vx"))) {
+                throw new IllegalArgumentException("the trace has no channel " + channel);
+            }
+            double[] vx = column(Channels.body(bc[0], "vx"));
+            double[] vy = column(Channels.body(bc[0], "vy"));
+            for (int i = 0; i < out.length; i++) {
+                out[i] = Math.hypot(vx[i], vy[i]);
+            }
+            return out;
+        }
+        for (int i = 0; i < out.length; i++) {
+            out[i] = rows.get(i)[c];
+        }
+        return out;
+    }
+}

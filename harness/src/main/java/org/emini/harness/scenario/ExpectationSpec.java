@@ -1,0 +1,80 @@
+package org.emini.harness.scenario;
+
+import org.emini.harness.load.JsonPath;
+
+/**
+ * One outcome the run must reach.
+ *
+ * @param kind what is checked
+ * @param channel the metric or closed-form channel (METRIC, CLOSED_FORM)
+ * @param of how samples reduce to one figure (METRIC, CLOSED_FORM); null when {@code at} is used
+ * @param at the time whose nearest sample is taken, or NaN
+ * @param relative divide drift figures by |initial|
+ * @param body the body (ENDS_NEAR, STAYS_INSIDE)
+ * @param point ENDS_NEAR target, or STAYS_INSIDE minimum corner
+ * @param max STAYS_INSIDE maximum corner
+ * @param atMost upper bound, or NaN
+ * @param atLeast lower bound, or NaN
+ * @param near target value, or NaN (with {@code tolerance})
+ * @param tolerance absolute tolerance for {@code near} and ENDS_NEAR, or NaN
+ * @param windowFrom start of the time window that counts (s)
+ * @param windowUntil end of the time window that counts (s), or +inf
+ * @param maxSpeed STABLE speed bound, or NaN
+ * @param maxAngularSpeed STABLE angular speed bound, or NaN
+ * @param maxEnergyRise STABLE energy rise bound, or NaN
+ * @param name a label, or null (a description is generated)
+ * @param why where the bound comes from, or null
+ * @param knownFailure the known-failure mark, or null
+ * @param path where the expectation is written
+ */
+public record ExpectationSpec(Kind kind, String channel, String of, double at, boolean relative, String body,
+                              double[] point, double[] max, double atMost, double atLeast, double near,
+                              double tolerance, double windowFrom, double windowUntil, double maxSpeed,
+                              double maxAngularSpeed, double maxEnergyRise, String name, String why,
+                              KnownFailure knownFailure, JsonPath path) {
+
+    /** Expectation kinds. */
+    public enum Kind { METRIC, CLOSED_FORM, ENDS_NEAR, STAYS_INSIDE, NO_TUNNELLING, STABLE }
+
+    /** A short human description, used in reports when the scene gives no name. */
+    public String describe() {
+        if (name != null) {
+            return name;
+        }
+        StringBuilder out = new StringBuilder();
+        switch (kind) {
+            case METRIC:
+            case CLOSED_FORM:
+                out.append(kind == Kind.CLOSED_FORM ? "closedForm " : "").append(channel).append(' ')
+                        .append(of != null ? of : "at " + at + " s");
+                if (relative) {
+                    out.append(" (relative)");
+                }
+                if (!Double.isNaN(near)) {
+                    out.append(" near ").append(near).append(" ± ").append(tolerance);
+                }
+                if (!Double.isNaN(atLeast)) {
+                    out.append(" ≥ ").append(atLeast);
+                }
+                if (!Double.isNaN(atMost)) {
+                    out.append(" ≤ ").append(atMost);
+                }
+                break;
+            case ENDS_NEAR:
+                out.append(body).append(" ends within ").append(tolerance).append(" px of (")
+                        .append(point[0]).append(", ").append(point[1]).append(')');
+                break;
+            case STAYS_INSIDE:
+                out.append(body).append(" stays inside (").append(point[0]).append(", ").append(point[1])
+                        .append(")..(").append(max[0]).append(", ").append(max[1]).append(')');
+                break;
+            case NO_TUNNELLING:
+                out.append("no tunnelling");
+                break;
+            default:
+                out.append("stable");
+                break;
+        }
+        return out.toString();
+    }
+}

@@ -1,0 +1,36 @@
+package org.emini.harness.scenario;
+
+import java.util.List;
+import org.emini.harness.load.JsonPath;
+
+/**
+ * A metric the scene asks to record, with its options.
+ *
+ * @param kind which metric
+ * @param aboutX angular momentum reference point (px)
+ * @param aboutY angular momentum reference point (px)
+ * @param walls tunnelling walls
+ * @param bodies tunnelling bodies (empty: every dynamic body)
+ * @param path where it is requested (null when an expectation asked for it implicitly)
+ */
+public record MetricSpec(Kind kind, double aboutX, double aboutY, List<WallSpec> walls, List<String> bodies,
+                         JsonPath path) {
+
+    /** Metric kinds, named as in the scene files; each documented in scenarios/README.md. */
+    public enum Kind { energy, linearMomentum, angularMomentum, penetration, constraintError, tunnelling, stability }
+
+    /** A metric with no options. */
+    public static MetricSpec plain(Kind kind, JsonPath path) {
+        return new MetricSpec(kind, 0, 0, List.of(), List.of(), path);
+    }
+
+    /**
+     * A tunnelling wall: a body (its long axis through its origin) or a fixed world segment.
+     *
+     * @param body the wall body's name, or null
+     * @param from segment start (px), when no body
+     * @param to segment end (px), when no body
+     */
+    public record WallSpec(String body, double[] from, double[] to) {
+    }
+}

@@ -1,0 +1,43 @@
+package org.emini.harness.scenario;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A validated scene, with defaults filled in and generators expanded into bodies.
+ *
+ * @param name the scene id ({@code stacking/tower-10})
+ * @param file the file it was read from
+ * @param description what the scene shows, or ""
+ * @param category the library category, or null
+ * @param world world settings
+ * @param shapes named shapes
+ * @param bodies every body, in creation order (written bodies first, then generators in order)
+ * @param actions scheduled actions, in file order
+ * @param elements elements kept as written, by top-level key (joints, springs, motors, landscape,
+ *     particles) plus {@code world.simulationArea}; built by their own builders
+ * @param run duration, record and expectations
+ * @param closedForm the closed-form reference, or null
+ * @param oracle the oracle settings (issue 6), or null
+ * @param knownFailure a mark for the whole scene, or null
+ */
+public record Scenario(String name, String file, String description, String category, WorldSpec world,
+                       Map<String, ShapeSpec> shapes, List<BodySpec> bodies, List<ActionSpec> actions,
+                       Map<String, Section> elements, RunSpec run, Section closedForm, Section oracle,
+                       KnownFailure knownFailure) {
+
+    /** The body with this name, or null. */
+    public BodySpec body(String bodyName) {
+        for (BodySpec b : bodies) {
+            if (b.name().equals(bodyName)) {
+                return b;
+            }
+        }
+        return null;
+    }
+
+    /** Number of ticks the run takes. */
+    public long ticks() {
+        return (long) Math.ceil(run.duration() / world.timestep() - 1e-9);
+    }
+}

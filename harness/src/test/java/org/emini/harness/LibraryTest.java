@@ -1,0 +1,65 @@
+package org.emini.harness;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import org.emini.harness.load.ScenarioFiles;
+import org.emini.harness.load.ScenarioLoader;
+import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.ScenarioRunner;
+import org.emini.harness.run.Status;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The scenario library: every file is valid, and a fast subset runs without regressions (the whole
+ * library runs in ./emini run). Scenes over a cost budget are left to ./emini run.
+ */
+class LibraryTest {
+    /** Bodies × ticks above which a scene is left out of the test run (the 10,000-body pile, big pyramids). */
+    private static final long BUDGET = 150_000;
+
+    @Test
+    void everySceneIsValidAndTheLibraryIsBigEnough() {
+        List<Path> files = ScenarioFiles.expand(List.of(Repo.scenarios()));
+        List<String> problems = new ArrayList<>();
+        for (Path f : files) {
+            ScenarioLoader.Loaded l = Scenes.loader().load(f);
+            l.problems().forEach(p -> problems.add(p.toString()));
+        }
+        assertEquals(List.of(), problems);
+        assertTrue(files.size() >= 40, files.size() + " scenes");
+    }
+
+    @Test
+    void fastScenesHaveNoRegression() {
+        List<String> regressions = new ArrayList<>();
+        int ran = 0;
+        for (Path f : ScenarioFiles.expand(List.of(Repo.scenarios()))) {
+            ScenarioLoader.Loaded l = Scenes.loader().load(f);
+            if ((long) l.scenario().bodies().size() * l.scenario().ticks() > BUDGET) {
+                continue;
+            }
+            SceneResult r = ScenarioRunner.run(l.scenario(), n -> { });
+            ran++;
+            if (r.status().failsRun()) {
+                regressions.add(r.scene() + ": " + r.message());
+            }
+        }
+        assertEquals(List.of(), regressions);
+        assertTrue(ran >= 40, ran + " scenes ran");
+    }
+
+    @Test
+    void scenesUsingElementsTheEngineLacksAreUnsupported() {
+        SceneResult r = ScenarioRunner.run(Scenes.loader().load(Repo.scenarios().resolve("stiff/long-chain.yaml"))
+                .scenario(), n -> { });
+        assertEquals(Status.UNSUPPORTED, r.status());
+        assertTrue(r.message().contains("joints"), r.message());
+        assertTrue(Set.of(Status.PASS, Status.KNOWN_FAILURE).contains(ScenarioRunner.run(Scenes.loader()
+                .load(Repo.scenarios().resolve("closed-form/projectile-20hz.yaml")).scenario(), n -> { }).status()));
+    }
+}

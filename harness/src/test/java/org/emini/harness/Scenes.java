@@ -1,0 +1,41 @@
+package org.emini.harness;
+
+import java.nio.file.Path;
+import org.emini.harness.load.ScenarioLoader;
+import org.emini.harness.load.SchemaCheck;
+import org.emini.harness.scenario.Scenario;
+
+/** Loads scenes from text in tests. */
+public final class Scenes {
+    private static SchemaCheck schema;
+
+    private Scenes() {
+    }
+
+    /** The library's loader (schema read once). */
+    public static synchronized ScenarioLoader loader() {
+        if (schema == null) {
+            schema = SchemaCheck.fromFile(Repo.schema());
+        }
+        return new ScenarioLoader(schema, Repo.scenarios());
+    }
+
+    /** Loads text as a file of that name. */
+    public static ScenarioLoader.Loaded load(String file, String... lines) {
+        return loader().load(file, String.join("\n", lines) + "\n", stem(file));
+    }
+
+    /** Loads text that must be valid. */
+    public static Scenario valid(String file, String... lines) {
+        ScenarioLoader.Loaded loaded = load(file, lines);
+        if (!loaded.ok()) {
+            throw new AssertionError("expected a valid scene, got " + loaded.problems());
+        }
+        return loaded.scenario();
+    }
+
+    private static String stem(String file) {
+        String n = Path.of(file).getFileName().toString();
+        return n.contains(".") ? n.substring(0, n.lastIndexOf('.')) : n;
+    }
+}

@@ -1,0 +1,69 @@
+package org.emini.harness.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.emini.harness.Repo;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The command line end to end: exit status, results, JUnit XML and traces. */
+class RunCommandTest {
+    private static final String FALLING = String.join("\n",
+            "bodies: [{name: ball, shape: {type: circle, radius: 5}}]",
+            "run:",
+            "  duration: 1",
+            "  expect:",
+            "    - {metric: body.ball.y, of: final, atLeast: 40, %s}",
+            "");
+
+    private static int run(Path scenes, Path reports) {
+        return Main.execute("run", "--schema", Repo.schema().toString(), "--reports", reports.toString(),
+                "--no-progress", scenes.toString());
+    }
+
+    private static JsonObject results(Path reports) throws Exception {
+        return JsonParser.parseString(Files.readString(reports.resolve("results.json"))).getAsJsonObject();
+    }
+
+    @Test
+    void passingAndKnownFailuresExitZero(@TempDir Path dir) throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        // Falls 50 px in 1 s (y = ½ g t²): at least 40 holds; at least 60 fails but is marked.
+        Files.writeString(scenes.resolve("a-pass.yaml"), String.format(FALLING, "name: falls"));
+        Files.writeString(scenes.resolve("b-known.yaml"), String.format(FALLING.replace("atLeast: 40", "atLeast: 60"),
+                "knownFailure: {reason: test, measured: 50}"));
+        Files.writeString(scenes.resolve("c-unsupported.yaml"), String.join("\n",
+                "bodies: [{name: a, shape: {type: circle, radius: 5}}, {name: b, shape: {type: circle, radius: 5}}]",
+                "joints: [{bodyA: a, bodyB: b}]", "run: {duration: 1}", ""));
+        Path reports = dir.resolve("reports");
+        assertEquals(0, run(scenes, reports));
+        JsonObject summary = results(reports).getAsJsonObject("summary");
+        assertEquals(1, summary.get("pass").getAsInt());
+        assertEquals(1, summary.get("knownFailure").getAsInt());
+        assertEquals(1, summary.get("unsupported").getAsInt());
+        assertTrue(Files.readString(reports.resolve("junit/TEST-scenarios.xml")).contains("tests=\"3\""));
+        JsonObject trace = JsonParser.parseString(Files.readString(reports.resolve("traces/a-pass.trace.json")))
+                .getAsJsonObject();
+        assertEquals("emini-trace", trace.get("format").getAsString());
+        assertEquals(21, trace.getAsJsonArray("time").size());
+        assertEquals(21, trace.getAsJsonObject("bodies").getAsJsonObject("ball").getAsJsonArray("y").size());
+    }
+
+    @Test
+    void aRegressionOrAnInvalidSceneExitsNonZero(@TempDir Path dir) throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("fail.yaml"), String.format(FALLING.replace("atLeast: 40", "atLeast: 60"),
+                "name: too far"));
+        assertEquals(1, run(scenes, dir.resolve("r1")));
+        assertEquals("FAIL", results(dir.resolve("r1")).getAsJsonArray("scenes").get(0).getAsJsonObject()
+                .get("status").getAsString());
+        Files.writeString(scenes.resolve("fail.yaml"), "run: {duration: 1, colour: red}\n");
+        assertEquals(1, run(scenes, dir.resolve("r2")));
+        assertEquals(1, Main.execute("validate", "--schema", Repo.schema().toString(), scenes.toString()));
+    }
+}
