@@ -406,10 +406,10 @@ public final class Event {
             Contact c = world.getContact(i);
             Body a = c.getBodyA();
             Body b = c.getBodyB();
-            // One report per contact: body A's side first.
+            // One report per contact: body A's side first. A landscape contact has no body B.
             if (wanted(a) && touches(c, a)) {
                 fire(a, c, listener);
-            } else if (wanted(b) && touches(c, b)) {
+            } else if (b != null && wanted(b) && touches(c, b)) {
                 fire(b, c, listener);
             }
         }
