@@ -126,21 +126,20 @@ final class SolverBodies {
                 rc = EMath.cos(theta);
                 rs = EMath.sin(theta);
             }
-            float c = st[o + C];
-            float s = st[o + S];
-            float nc = c * rc - s * rs;
-            float ns = s * rc + c * rs;
-            float inv = 1f / EMath.sqrt(nc * nc + ns * ns);
-            st[o + C] = nc * inv;
-            st[o + S] = ns * inv;
-            c = st[o + DQC];
-            s = st[o + DQS];
-            nc = c * rc - s * rs;
-            ns = s * rc + c * rs;
-            inv = 1f / EMath.sqrt(nc * nc + ns * ns);
-            st[o + DQC] = nc * inv;
-            st[o + DQS] = ns * inv;
+            rotate(st, o + C, rc, rs);
+            rotate(st, o + DQC, rc, rs);
         }
+    }
+
+    /** Turns the (cos, sin) pair at st[i], st[i + 1] by (rc, rs) and renormalises it. */
+    private static void rotate(float[] st, int i, float rc, float rs) {
+        float c = st[i];
+        float s = st[i + 1];
+        float nc = c * rc - s * rs;
+        float ns = s * rc + c * rs;
+        float inv = 1f / EMath.sqrt(nc * nc + ns * ns);
+        st[i] = nc * inv;
+        st[i + 1] = ns * inv;
     }
 
     /**

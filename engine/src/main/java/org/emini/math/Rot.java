@@ -3,8 +3,8 @@ package org.emini.math;
 /**
  * A rotation stored as its cosine and sine.
  *
- * <p>The engine keeps orientations as (cos, sin) pairs and advances them without trigonometry
- * (see {@link #integrate(float)}), so the angle itself is only needed at the API boundary.
+ * <p>The engine keeps orientations as (cos, sin) pairs and advances them with a short series
+ * rather than trigonometry, so the angle itself is only needed at the API boundary.
  * A rotation by angle θ maps a local point (x, y) to (c·x − s·y, s·x + c·y); on a y-down screen a
  * growing angle turns a body clockwise.
  */
@@ -46,22 +46,6 @@ public final class Rot {
      */
     public float angle() {
         return EMath.atan2(s, c);
-    }
-
-    /**
-     * Advances the rotation by a small angle without trigonometry: q ← normalize(q + dθ·q⊥).
-     * Exact to second order in dθ; the normalisation keeps |q| = 1.
-     *
-     * @param deltaRadians the angle increment, small (the angular velocity times a substep)
-     * @return this rotation
-     */
-    public Rot integrate(float deltaRadians) {
-        float nc = c - deltaRadians * s;
-        float ns = s + deltaRadians * c;
-        float inv = 1f / EMath.sqrt(nc * nc + ns * ns);
-        c = nc * inv;
-        s = ns * inv;
-        return this;
     }
 
     /**
