@@ -10,13 +10,15 @@ package org.emini.dynamics;
  */
 public final class SolverStep {
     private final SolverBodies bodies;
+    private final World world;
     private float dt;
     private float h;
     private float invH;
     private final Softness jointSoftness = new Softness();
 
-    SolverStep(SolverBodies bodies) {
+    SolverStep(SolverBodies bodies, World world) {
         this.bodies = bodies;
+        this.world = world;
     }
 
     void begin(float dt, float h, float jointHertz, float jointDampingRatio) {
@@ -62,8 +64,14 @@ public final class SolverStep {
      *
      * @param body the body
      * @return its index
+     * @throws IllegalStateException if the body is not in the world being ticked (a constraint
+     *     added to another world than its bodies')
      */
     public int indexOf(Body body) {
+        if (body.world != world) {
+            throw new IllegalStateException("SolverStep.indexOf: " + body
+                + " is not in the world being ticked; add a constraint to the world of its bodies");
+        }
         return body.solverIndex;
     }
 
@@ -220,6 +228,28 @@ public final class SolverStep {
     public float getAngle(Body body) {
         int i = body.solverIndex;
         return i == 0 ? body.angle : bodies.state[i * SolverBodies.STRIDE + SolverBodies.ANGLE];
+    }
+
+    /**
+     * A body's current x position (its origin), static bodies included.
+     *
+     * @param body the body
+     * @return x (px)
+     */
+    public float getPositionX(Body body) {
+        int i = body.solverIndex;
+        return i == 0 ? body.x : bodies.state[i * SolverBodies.STRIDE + SolverBodies.X];
+    }
+
+    /**
+     * A body's current y position (its origin), static bodies included.
+     *
+     * @param body the body
+     * @return y (px)
+     */
+    public float getPositionY(Body body) {
+        int i = body.solverIndex;
+        return i == 0 ? body.y : bodies.state[i * SolverBodies.STRIDE + SolverBodies.Y];
     }
 
     /**

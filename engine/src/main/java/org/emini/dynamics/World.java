@@ -1,6 +1,8 @@
 package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
+import org.emini.event.Event;
+import org.emini.event.PhysicsEventListener;
 
 /**
  * The simulated world: bodies, gravity, the solver's settings, and {@link #tick()}.
@@ -43,10 +45,15 @@ public final class World {
     private final ContactManager contacts = new ContactManager(this);
     private final SolverBodies solverBodies = new SolverBodies();
     private final ContactSolver contactSolver = new ContactSolver();
-    private final SolverStep step = new SolverStep(solverBodies);
+    private final SolverStep step = new SolverStep(solverBodies, this);
     private final ContinuousSolver continuous = new ContinuousSolver(this);
     private Constraint[] constraints = new Constraint[8];
     private int constraintCount;
+    private ExternalForce[] forces = new ExternalForce[4];
+    private int forceCount;
+    private Event[] events = new Event[4];
+    private int eventCount;
+    private PhysicsEventListener eventListener;
     private final Softness soft = new Softness();
     private final Softness staticSoft = new Softness();
     private final float[] aabb = new float[4];
@@ -559,6 +566,155 @@ public final class World {
     }
 
     // ---------------------------------------------------------------------------------------------
+    // External forces
+
+    /**
+     * Adds an external force, applied at the start of every tick before anything moves.
+     *
+     * @param force the force
+     */
+    public void addExternalForce(ExternalForce force) {
+        Check.notNull("World.addExternalForce", "force", force);
+        if (indexOf(forces, forceCount, force) >= 0) {
+            throw new IllegalArgumentException("World.addExternalForce: the force is already in this world");
+        }
+        forces = grown(forces, forceCount);
+        forces[forceCount++] = force;
+    }
+
+    /**
+     * Removes an external force.
+     *
+     * @param force the force
+     * @return true when it was in this world
+     */
+    public boolean removeExternalForce(ExternalForce force) {
+        int i = indexOf(forces, forceCount, force);
+        if (i < 0) {
+            return false;
+        }
+        forceCount = removeAt(forces, forceCount, i);
+        return true;
+    }
+
+    /**
+     * The number of external forces.
+     *
+     * @return the count
+     */
+    public int getExternalForceCount() {
+        return forceCount;
+    }
+
+    /**
+     * An external force by its position in the world's list (insertion order).
+     *
+     * @param index 0 to {@link #getExternalForceCount()} − 1
+     * @return the force
+     */
+    public ExternalForce getExternalForce(int index) {
+        if (index < 0 || index >= forceCount) {
+            throw new IndexOutOfBoundsException("World.getExternalForce: index " + index + " of " + forceCount);
+        }
+        return forces[index];
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Events
+
+    /**
+     * Sets the listener that is told about events. Events are checked at the end of every tick,
+     * in the order they were added, only while a listener is set: without one they cost nothing.
+     *
+     * @param listener the listener, or null to stop checking events
+     */
+    public void setPhysicsEventListener(PhysicsEventListener listener) {
+        eventListener = listener;
+    }
+
+    /**
+     * The listener told about events.
+     *
+     * @return the listener, or null
+     */
+    public PhysicsEventListener getPhysicsEventListener() {
+        return eventListener;
+    }
+
+    /**
+     * Adds an event to check at the end of every tick.
+     *
+     * @param event the event
+     */
+    public void addEvent(Event event) {
+        Check.notNull("World.addEvent", "event", event);
+        if (indexOf(events, eventCount, event) >= 0) {
+            throw new IllegalArgumentException("World.addEvent: the event is already in this world");
+        }
+        events = grown(events, eventCount);
+        events[eventCount++] = event;
+    }
+
+    /**
+     * Removes an event.
+     *
+     * @param event the event
+     * @return true when it was in this world
+     */
+    public boolean removeEvent(Event event) {
+        int i = indexOf(events, eventCount, event);
+        if (i < 0) {
+            return false;
+        }
+        eventCount = removeAt(events, eventCount, i);
+        return true;
+    }
+
+    /**
+     * The number of events.
+     *
+     * @return the count
+     */
+    public int getEventCount() {
+        return eventCount;
+    }
+
+    /**
+     * An event by its position in the world's list (insertion order); the position is the
+     * original engine's event id.
+     *
+     * @param index 0 to {@link #getEventCount()} − 1
+     * @return the event
+     */
+    public Event getEvent(int index) {
+        if (index < 0 || index >= eventCount) {
+            throw new IndexOutOfBoundsException("World.getEvent: index " + index + " of " + eventCount);
+        }
+        return events[index];
+    }
+
+    private static int indexOf(Object[] list, int count, Object item) {
+        for (int i = 0; i < count; i++) {
+            if (list[i] == item) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /** The list itself, or a copy twice as long when it is full. */
+    private static <T> T[] grown(T[] list, int count) {
+        return count < list.length ? list : java.util.Arrays.copyOf(list, count * 2);
+    }
+
+    /** Removes an element keeping the order; returns the new count. */
+    private static int removeAt(Object[] list, int count, int i) {
+        System.arraycopy(list, i + 1, list, i, count - i - 1);
+        list[count - 1] = null;
+        return count - 1;
+    }
+
+    // ---------------------------------------------------------------------------------------------
     // Contacts
 
     /**
@@ -596,9 +752,15 @@ public final class World {
     // ---------------------------------------------------------------------------------------------
     // The tick
 
-    /** Advances the world by one timestep. */
+    /**
+     * Advances the world by one timestep: external forces, collision detection, the solve (constraints
+     * and contacts), then, when a listener is set, the events.
+     */
     public void tick() {
         float dt = timestep;
+        for (int i = 0; i < forceCount; i++) {
+            forces[i].applyForce(this, dt);
+        }
         area.collect(this, broadPhase, bodies, bodyCount);
         contacts.beginLandscape(landscape);
         updateBroadPhase(dt);
@@ -611,6 +773,11 @@ public final class World {
         contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
         solve(dt);
         tickCount++;
+        if (eventListener != null) {
+            for (int i = 0; i < eventCount; i++) {
+                events[i].check(this, eventListener);
+            }
+        }
     }
 
     /** Moves the proxies of the simulated bodies and of the bodies the application moved. */

@@ -15,9 +15,9 @@ final class ElementBuilders {
         Map<String, ElementBuilder> builders = new LinkedHashMap<>();
         builders.put("world.simulationArea", new NotYetInEngine("world.simulationArea"));
         builders.put("landscape", new NotYetInEngine("landscape"));
-        builders.put("joints", new NotYetInEngine("joints"));
-        builders.put("springs", new NotYetInEngine("springs"));
-        builders.put("motors", new NotYetInEngine("motors"));
+        builders.put("joints", new ConstraintBuilders.Joints());
+        builders.put("springs", new ConstraintBuilders.Springs());
+        builders.put("motors", new ConstraintBuilders.Motors());
         builders.put("particles", new NotYetInEngine("particles"));
         return builders;
     }

@@ -3,10 +3,14 @@ package org.emini.harness.cli;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
-/** The harness command line: {@code validate} and {@code run} over scenario files and folders. */
+/**
+ * The harness command line: {@code validate} and {@code run} over scenario files and folders,
+ * {@code compare} with the pymunk oracle and {@code expand} (scenes as the harness reads them).
+ */
 @Command(name = "harness", mixinStandardHelpOptions = true, version = "emini harness 0.1.0",
         description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
-        subcommands = {ValidateCommand.class, RunCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {ValidateCommand.class, RunCommand.class, CompareCommand.class, ExpandCommand.class,
+                SweepCommand.class, StabilityCommand.class, DashboardCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @Override

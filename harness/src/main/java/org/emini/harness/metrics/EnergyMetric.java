@@ -1,6 +1,7 @@
 package org.emini.harness.metrics;
 
 import java.util.List;
+import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.World;
 import org.emini.harness.build.BuiltWorld;
@@ -8,7 +9,7 @@ import org.emini.harness.build.BuiltWorld;
 /**
  * energy.kinetic = Σ ½·m·|v|² + ½·I·ω² over dynamic bodies; energy.potential = Σ −m·(g·r) over dynamic,
  * gravity-affected bodies (r the body position, which is its centre of mass; g the current gravity);
- * energy.total = their sum. Spring potential joins the sum when the engine has springs.
+ * energy.total = their sum plus the springs' potential Σ ½·k·(d − d₀)² (springs with a stiffness).
  */
 final class EnergyMetric implements Metric {
     private final World world;
@@ -39,8 +40,15 @@ final class EnergyMetric implements Metric {
                 potential -= m * (gx * b.getX() + gy * b.getY());
             }
         }
+        double springs = 0;
+        for (int i = 0; i < world.getConstraintCount(); i++) {
+            if (world.getConstraint(i) instanceof Spring s && !s.isRigid()) {
+                double stretch = s.getLength() - s.getRestLength();
+                springs += 0.5 * s.getCoefficient() * stretch * stretch;
+            }
+        }
         out[offset] = kinetic;
         out[offset + 1] = potential;
-        out[offset + 2] = kinetic + potential;
+        out[offset + 2] = kinetic + potential + springs;
     }
 }

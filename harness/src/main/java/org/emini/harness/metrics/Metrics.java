@@ -13,8 +13,7 @@ public final class Metrics {
     /**
      * The metric for a request.
      *
-     * @throws UnsupportedElementException for a metric the engine cannot feed yet (constraint error:
-     *     the engine has no joints or springs)
+     * @throws UnsupportedElementException for a metric the engine cannot feed
      */
     public static Metric create(MetricSpec spec, BuiltWorld world) throws UnsupportedElementException {
         switch (spec.kind()) {
@@ -30,6 +29,8 @@ public final class Metrics {
                 return new TunnellingMetric(world, spec);
             case stability:
                 return new StabilityMetric(world);
+            case constraintError:
+                return new ConstraintErrorMetric(world.world());
             default:
                 throw new UnsupportedElementException("metric " + spec.kind(),
                         spec.path() != null ? spec.path() : JsonPath.ROOT.key("run"));

@@ -100,7 +100,7 @@ public final class ScenarioRunner {
     }
 
     /** Ticks between samples: the record interval rounded to whole ticks (at least one). */
-    static long samplingTicks(RecordSpec record, double timestep) {
+    public static long samplingTicks(RecordSpec record, double timestep) {
         return Double.isNaN(record.every()) ? 1 : Math.max(1, Math.round(record.every() / timestep));
     }
 

@@ -39,7 +39,7 @@ class RunCommandTest {
                 "knownFailure: {reason: test, measured: 50}"));
         Files.writeString(scenes.resolve("c-unsupported.yaml"), String.join("\n",
                 "bodies: [{name: a, shape: {type: circle, radius: 5}}, {name: b, shape: {type: circle, radius: 5}}]",
-                "joints: [{bodyA: a, bodyB: b}]", "run: {duration: 1}", ""));
+                "landscape: {segments: [{from: [-100, 50], to: [100, 50]}]}", "run: {duration: 1}", ""));
         Path reports = dir.resolve("reports");
         assertEquals(0, run(scenes, reports));
         JsonObject summary = results(reports).getAsJsonObject("summary");

@@ -1,0 +1,222 @@
+package org.emini.constraint;
+
+import org.emini.dynamics.Body;
+import org.emini.dynamics.SolverStep;
+import org.emini.math.EMath;
+
+/**
+ * A pin joint: an anchor on each body held at the same point. A loose joint lets the bodies turn
+ * freely about it; a fixed joint also locks their relative angle at the angle they have when the
+ * joint is created, so the two act as one rigid body (the manual's way to build concave bodies).
+ * Either body may be static, and anchors may lie outside the bodies.
+ *
+ * <p>Solved as Box2D v3 solves its revolute and weld joints: the point constraint as one 2×2 block,
+ * the angle (fixed joints) as a scalar before it; the biased pass corrects the position error with
+ * the world's joint softness, the relax pass is rigid. Bodies joined by a pin usually should not
+ * collide with each other: see {@link #setCollisionLayer(int)}.
+ */
+public final class Joint extends TwoBodyConstraint {
+    private final boolean fixed;
+    // Relative rotation of B with respect to A when the joint was made (fixed joints hold it).
+    private final float referenceCos;
+    private final float referenceSin;
+    private final float referenceAngle;
+
+    private boolean active;
+    private float axialMass;
+    // Angle error at the start of the tick, as a rotation (exact for any turn of the bodies).
+    private float errorCos;
+    private float errorSin;
+    // Impulses of the current substep, and all impulses applied in the tick.
+    private float accX;
+    private float accY;
+    private float accAngle;
+    private float tickX;
+    private float tickY;
+    private float tickAngle;
+    private float torque;
+
+    /**
+     * Creates a joint between two bodies that are in the same world.
+     *
+     * @param a the first body
+     * @param b the second body
+     * @param ax x of the pivot in a's own frame (px)
+     * @param ay y of the pivot in a's own frame (px)
+     * @param bx x of the pivot in b's own frame (px)
+     * @param by y of the pivot in b's own frame (px)
+     * @param fixed true to lock the bodies' relative angle as it is now
+     */
+    public Joint(Body a, Body b, float ax, float ay, float bx, float by, boolean fixed) {
+        super("Joint", a, b, ax, ay, bx, by);
+        this.fixed = fixed;
+        float ca = a.getCos();
+        float sa = a.getSin();
+        float cb = b.getCos();
+        float sb = b.getSin();
+        referenceCos = ca * cb + sa * sb;
+        referenceSin = ca * sb - sa * cb;
+        referenceAngle = b.getAngle() - a.getAngle();
+    }
+
+    /**
+     * Creates a joint whose pivot is a world point, where both bodies are now.
+     *
+     * @param a the first body
+     * @param b the second body
+     * @param x the pivot's world x (px)
+     * @param y the pivot's world y (px)
+     * @param fixed true to lock the bodies' relative angle as it is now
+     * @return the joint (not yet added to the world)
+     */
+    public static Joint atWorldPoint(Body a, Body b, float x, float y, boolean fixed) {
+        Require.finite("Joint.atWorldPoint", "x", x);
+        Require.finite("Joint.atWorldPoint", "y", y);
+        Require.inWorld("Joint.atWorldPoint", "body a", a);
+        Require.inWorld("Joint.atWorldPoint", "body b", b);
+        return new Joint(a, b, a.toLocalX(x, y), a.toLocalY(x, y), b.toLocalX(x, y), b.toLocalY(x, y), fixed);
+    }
+
+    /**
+     * Whether the joint locks the relative angle.
+     *
+     * @return true for a fixed joint
+     */
+    public boolean isFixed() {
+        return fixed;
+    }
+
+    /**
+     * The relative angle (B's angle minus A's) a fixed joint holds: the one at creation.
+     *
+     * @return the angle (rad)
+     */
+    public float getReferenceAngle() {
+        return referenceAngle;
+    }
+
+    /**
+     * The magnitude of the torque a fixed joint exerted to hold the angle in the last tick.
+     *
+     * @return the torque (mass·px²/s²); 0 for loose joints
+     */
+    public float getTorque() {
+        return torque;
+    }
+
+    @Override
+    public void prepare(SolverStep step) {
+        active = prepareAnchors(step);
+        float k = iA + iB;
+        axialMass = fixed && k > 0f ? 1f / k : 0f;
+        if (axialMass != 0f) {
+            // Angle error now: (B's angle − A's angle) − reference, composed as rotations.
+            float ca = bodyA.getCos();
+            float sa = bodyA.getSin();
+            float cb = bodyB.getCos();
+            float sb = bodyB.getSin();
+            float c = ca * cb + sa * sb;
+            float s = ca * sb - sa * cb;
+            errorCos = c * referenceCos + s * referenceSin;
+            errorSin = s * referenceCos - c * referenceSin;
+        }
+        tickX = 0f;
+        tickY = 0f;
+        tickAngle = 0f;
+    }
+
+    @Override
+    public void warmStart(SolverStep step) {
+        if (!active) {
+            return;
+        }
+        float scale = substepScale(step);
+        accX *= scale;
+        accY *= scale;
+        accAngle *= scale;
+        arms(step);
+        applyLinear(step, accX, accY);
+        step.applyAngularImpulse(ia, -accAngle);
+        step.applyAngularImpulse(ib, accAngle);
+        // Count every impulse applied in the tick: substeps after convergence only warm start.
+        tickX += accX;
+        tickY += accY;
+        tickAngle += accAngle;
+    }
+
+    @Override
+    public float solve(SolverStep step, boolean useBias) {
+        if (!active) {
+            return 0f;
+        }
+        float change = 0f;
+        float biasRate = useBias ? step.getJointBiasRate() : 0f;
+        float massScale = useBias ? step.getJointMassScale() : 1f;
+        float impulseScale = useBias ? step.getJointImpulseScale() : 0f;
+        if (axialMass != 0f) {
+            float bias = 0f;
+            if (useBias) {
+                bias = biasRate * angleError(step);
+            }
+            float cdot = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
+            float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accAngle;
+            accAngle += impulse;
+            tickAngle += impulse;
+            step.applyAngularImpulse(ia, -impulse);
+            step.applyAngularImpulse(ib, impulse);
+            change = Math.abs(impulse / axialMass) * radius;
+        }
+
+        arms(step);
+        float cx = relativeVelocityX(step);
+        float cy = relativeVelocityY(step);
+        if (useBias) {
+            cx += biasRate * sepX;
+            cy += biasRate * sepY;
+        }
+        // K = J M⁻¹ Jᵀ for the point constraint.
+        float m = mA + mB;
+        float k11 = m + iA * rAy * rAy + iB * rBy * rBy;
+        float k12 = -iA * rAy * rAx - iB * rBy * rBx;
+        float k22 = m + iA * rAx * rAx + iB * rBx * rBx;
+        float det = k11 * k22 - k12 * k12;
+        if (det > 0f) {
+            float inv = 1f / det;
+            float px = -massScale * inv * (k22 * cx - k12 * cy) - impulseScale * accX;
+            float py = -massScale * inv * (k11 * cy - k12 * cx) - impulseScale * accY;
+            accX += px;
+            accY += py;
+            tickX += px;
+            tickY += py;
+            applyLinear(step, px, py);
+            // The change of the anchors' relative velocity is K times the impulse.
+            float dvx = Math.abs(k11 * px + k12 * py);
+            float dvy = Math.abs(k12 * px + k22 * py);
+            change = Math.max(change, Math.max(dvx, dvy));
+        }
+        return change;
+    }
+
+    /** The angle error now: the tick's start error turned by the bodies' relative rotation since. */
+    private float angleError(SolverStep step) {
+        float ac = step.getDeltaCos(ia);
+        float as = step.getDeltaSin(ia);
+        float bc = step.getDeltaCos(ib);
+        float bs = step.getDeltaSin(ib);
+        float rc = ac * bc + as * bs;
+        float rs = ac * bs - as * bc;
+        return EMath.atan2(errorSin * rc + errorCos * rs, errorCos * rc - errorSin * rs);
+    }
+
+    @Override
+    public void finish(SolverStep step) {
+        float inv = 1f / step.getTimestep();
+        force = EMath.sqrt(tickX * tickX + tickY * tickY) * inv;
+        torque = Math.abs(tickAngle) * inv;
+    }
+
+    @Override
+    public String toString() {
+        return (fixed ? "Joint(fixed, " : "Joint(") + bodyA + ", " + bodyB + ")";
+    }
+}

@@ -1,0 +1,99 @@
+package org.emini.harness.build;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import org.emini.constraint.Joint;
+import org.emini.constraint.Motor;
+import org.emini.constraint.Spring;
+import org.emini.dynamics.Body;
+import org.emini.harness.scenario.Section;
+
+/** Builders of the constraint sections: joints, springs and motors, through the engine's public API. */
+final class ConstraintBuilders {
+    private ConstraintBuilders() {
+    }
+
+    private static float x(JsonNode v) {
+        return (float) v.get(0).asDouble();
+    }
+
+    private static float y(JsonNode v) {
+        return (float) v.get(1).asDouble();
+    }
+
+    /**
+     * Joints that may not collide get a layer bit of their own, counted from 31 down and reused after
+     * 32 joints: neighbours in a chain never share one, which is all a chain needs.
+     */
+    static final class Joints implements ElementBuilder {
+        @Override
+        public void build(Section section, BuiltWorld world) {
+            int index = 0;
+            for (JsonNode j : section.node()) {
+                Body a = world.body(j.get("bodyA").asText());
+                Body b = world.body(j.get("bodyB").asText());
+                boolean fixed = j.path("fixed").asBoolean(false);
+                Joint joint;
+                if (j.has("at")) {
+                    joint = Joint.atWorldPoint(a, b, x(j.get("at")), y(j.get("at")), fixed);
+                } else {
+                    JsonNode pa = j.path("anchorA");
+                    JsonNode pb = j.path("anchorB");
+                    joint = new Joint(a, b, pa.isArray() ? x(pa) : 0f, pa.isArray() ? y(pa) : 0f,
+                        pb.isArray() ? x(pb) : 0f, pb.isArray() ? y(pb) : 0f, fixed);
+                }
+                if (!j.path("collide").asBoolean(false)) {
+                    joint.setCollisionLayer(31 - index % 32);
+                }
+                world.world().addConstraint(joint);
+                index++;
+            }
+        }
+    }
+
+    /** Springs: rigid links without a stiffness, Hooke springs with one. */
+    static final class Springs implements ElementBuilder {
+        @Override
+        public void build(Section section, BuiltWorld world) {
+            int index = 0;
+            for (JsonNode s : section.node()) {
+                Body a = world.body(s.get("bodyA").asText());
+                Body b = world.body(s.get("bodyB").asText());
+                JsonNode pa = s.path("anchorA");
+                JsonNode pb = s.path("anchorB");
+                float ax = pa.isArray() ? x(pa) : 0f;
+                float ay = pa.isArray() ? y(pa) : 0f;
+                float bx = pb.isArray() ? x(pb) : 0f;
+                float by = pb.isArray() ? y(pb) : 0f;
+                Spring spring = s.has("restLength")
+                    ? new Spring(a, b, ax, ay, bx, by, (float) s.get("restLength").asDouble())
+                    : new Spring(a, b, ax, ay, bx, by);
+                float k = (float) s.path("stiffness").asDouble(0);
+                if (k > 0f) {
+                    spring.setCoefficient(k);
+                    spring.setDamping((float) s.path("damping").asDouble(0));
+                }
+                if (!s.path("collide").asBoolean(true)) {
+                    spring.setCollisionLayer(index % 32);
+                }
+                world.world().addConstraint(spring);
+                index++;
+            }
+        }
+    }
+
+    /** Motors: the scene's cap is an impulse per tick; the engine's is a force, so divide by dt. */
+    static final class Motors implements ElementBuilder {
+        @Override
+        public void build(Section section, BuiltWorld world) {
+            float dt = world.world().getTimestep();
+            for (JsonNode m : section.node()) {
+                Body body = world.body(m.get("body").asText());
+                float max = (float) m.get("maxImpulse").asDouble() / dt;
+                Motor motor = m.has("velocity")
+                    ? new Motor(body, x(m.get("velocity")), y(m.get("velocity")), max)
+                    : new Motor(body, (float) m.path("angularVelocity").asDouble(0), max);
+                world.world().addConstraint(motor);
+            }
+        }
+    }
+}

@@ -1,0 +1,224 @@
+package org.emini.harness.cli;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import org.emini.harness.build.BuiltWorld;
+import org.emini.harness.build.WorldBuilder;
+import org.emini.harness.closedform.ClosedForm;
+import org.emini.harness.closedform.ClosedForms;
+import org.emini.harness.load.ScenarioFiles;
+import org.emini.harness.load.ScenarioLoader;
+import org.emini.harness.oracle.CompareReport;
+import org.emini.harness.oracle.Comparison;
+import org.emini.harness.oracle.OracleEnvironment;
+import org.emini.harness.oracle.OracleRunner;
+import org.emini.harness.oracle.OracleScene;
+import org.emini.harness.oracle.OracleSettings;
+import org.emini.harness.oracle.TraceReader;
+import org.emini.harness.report.TraceWriter;
+import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.ScenarioRunner;
+import org.emini.harness.run.Trace;
+import org.emini.harness.scenario.Scenario;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code compare PATHS}: runs each scene in the engine and in the pymunk oracle (oracle-py/), compares
+ * energy, momentum, penetration and (for scenes that are not chaotic) trajectories under the scene's
+ * tolerances, and both with the closed form or law where the scene has one. Writes compare.json,
+ * summary.md and both traces. Exits 1 only when a scene could not be compared (an oracle error,
+ * traces that do not line up): differences between the engines are findings, not failures.
+ */
+@Command(name = "compare", mixinStandardHelpOptions = true,
+        description = "Runs scenes in the engine and in pymunk and compares them (and both with the closed form).")
+final class CompareCommand implements Callable<Integer> {
+    @Mixin
+    Library library;
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(paramLabel = "PATHS", arity = "0..*", description = "Scene files or folders (default: the library).")
+    List<Path> paths;
+
+    @Option(names = "--reports", paramLabel = "DIR", defaultValue = "reports/compare",
+            description = "Where compare.json, summary.md and traces/ go (default: ${DEFAULT-VALUE}).")
+    Path reports;
+
+    @Option(names = "--jobs", paramLabel = "N", description = "Scenes run in parallel on each side (default: the number of cores).")
+    Integer jobs;
+
+    @Option(names = "--oracle", paramLabel = "DIR",
+            description = "The oracle's folder (default: oracle-py beside the scenarios folder).")
+    Path oracleDir;
+
+    @Option(names = "--python", paramLabel = "CMD",
+            description = "The Python that creates the oracle's environment (default: $EMINI_PYTHON or python3).")
+    String python;
+
+    @Option(names = "--setup-only", description = "Create or refresh the oracle's environment, then stop.")
+    boolean setupOnly;
+
+    @Override
+    public Integer call() throws Exception {
+        long start = System.nanoTime();
+        Path oracleHome = oracleDir != null ? oracleDir : library.root().getParent().resolve("oracle-py");
+        OracleEnvironment env = new OracleEnvironment(oracleHome, python != null ? python : OracleEnvironment.defaultPython());
+        Path interpreter = env.ensure(System.err);
+        if (setupOnly) {
+            System.out.println("oracle environment ready: " + interpreter);
+            return 0;
+        }
+        ScenarioLoader loader = library.loader();
+        List<Path> files = ScenarioFiles.expand(paths == null || paths.isEmpty() ? List.of(library.root()) : paths);
+        List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
+        List<Path> valid = new ArrayList<>();
+        for (Path f : files) {
+            ScenarioLoader.Loaded l = loader.load(f);
+            loaded.add(l);
+            if (l.ok()) {
+                valid.add(f);
+            }
+        }
+        int threads = Math.max(1, jobs != null ? jobs : Runtime.getRuntime().availableProcessors());
+        Path oracleTraces = reports.resolve("traces").resolve("pymunk");
+        Path engineTraces = reports.resolve("traces").resolve("emini");
+        OracleRunner.Run oracleRun = new OracleRunner(interpreter, library.schemaFile()).start(valid, oracleTraces, threads);
+
+        // The engine runs while the oracle does.
+        Map<ScenarioLoader.Loaded, Future<SceneResult>> engine = new LinkedHashMap<>();
+        ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
+            Thread t = new Thread(r, "engine");
+            t.setDaemon(true);
+            return t;
+        });
+        try {
+            for (ScenarioLoader.Loaded l : loaded) {
+                if (l.ok()) {
+                    engine.put(l, pool.submit(() -> runEngine(l.scenario(), engineTraces)));
+                }
+            }
+            Map<Path, OracleScene> oracle = oracleRun.await();
+            List<Comparison.Scene> scenes = new ArrayList<>();
+            int width = 10;
+            for (ScenarioLoader.Loaded l : loaded) {
+                width = Math.max(width, l.ok() ? l.scenario().name().length() : l.file().toString().length());
+            }
+            for (ScenarioLoader.Loaded l : loaded) {
+                Comparison.Scene c;
+                if (!l.ok()) {
+                    c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, "ERROR",
+                            "invalid scene: " + l.problems(), "ERROR", null, OracleSettings.DEFAULT, null, List.of());
+                } else {
+                    SceneResult r = get(engine.get(l));
+                    OracleScene o = oracle.get(l.file().toAbsolutePath().normalize());
+                    Trace oracleTrace = o != null && o.ok() ? TraceReader.read(Path.of(o.trace())).trace() : null;
+                    c = Comparison.compare(l.scenario(), r.status().label() + (r.message().isEmpty() ? "" : ": "
+                            + r.message()), r.trace(), o, oracleTrace, closedForm(l.scenario()));
+                }
+                scenes.add(c);
+                System.out.println(line(c, width));
+            }
+            CompareReport.Summary summary = CompareReport.Summary.of(scenes, (System.nanoTime() - start) / 1e9);
+            System.out.println(summary);
+            String command = "./emini harness " + String.join(" ", spec.commandLine().getParseResult().originalArgs());
+            CompareReport.write(reports, scenes, summary, command, pymunkVersion(oracleHome));
+            System.out.println("report: " + reports.resolve("summary.md") + ", " + reports.resolve("compare.json"));
+            return summary.failed() ? 1 : 0;
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private static SceneResult runEngine(Scenario s, Path traces) {
+        SceneResult r = ScenarioRunner.run(s, n -> { });
+        if (r.trace() != null) {
+            try {
+                TraceWriter.write(TraceWriter.fileFor(traces, r.scene()), r.scene(), "emini", r.trace());
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        }
+        return r;
+    }
+
+    /**
+     * The scene's closed-form model, built on a world without the elements the engine may lack (only
+     * the pendulum model reads the world, for the bob's inertia).
+     */
+    static ClosedForm closedForm(Scenario s) {
+        if (s.closedForm() == null) {
+            return null;
+        }
+        Scenario bodiesOnly = new Scenario(s.name(), s.file(), s.description(), s.category(), s.world(), s.shapes(),
+                s.bodies(), s.actions(), Map.of(), s.run(), s.closedForm(), s.oracle(), s.knownFailure());
+        BuiltWorld built;
+        try {
+            built = WorldBuilder.build(bodiesOnly);
+        } catch (Exception e) {
+            built = null;
+        }
+        try {
+            return ClosedForms.create(bodiesOnly, built);
+        } catch (RuntimeException e) {
+            return null;
+        }
+    }
+
+    private static String pymunkVersion(Path oracleHome) {
+        try {
+            for (String line : Files.readAllLines(oracleHome.resolve("requirements.txt"), StandardCharsets.UTF_8)) {
+                if (line.startsWith("pymunk==")) {
+                    return "pymunk " + line.substring("pymunk==".length()).trim();
+                }
+            }
+        } catch (IOException e) {
+            // fall through
+        }
+        return "pymunk";
+    }
+
+    private static String line(Comparison.Scene c, int width) {
+        int agree = 0, differ = 0, engine = 0, oracle = 0, tie = 0;
+        for (Comparison.Row r : c.rows()) {
+            agree += r.agreement().equals("agree") ? 1 : 0;
+            differ += r.agreement().equals("differ") ? 1 : 0;
+            engine += r.closer().equals("engine") ? 1 : 0;
+            oracle += r.closer().equals("oracle") ? 1 : 0;
+            tie += r.closer().equals("tie") ? 1 : 0;
+        }
+        String counts = String.format(Locale.ROOT, "%3d rows: %2d agree %2d differ; closer: engine %d, pymunk %d, tie %d",
+                c.rows().size(), agree, differ, engine, oracle, tie);
+        String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", c.status(), c.scene(), counts);
+        return c.note().isEmpty() ? line : line + "  [" + c.note() + "]";
+    }
+
+    private static SceneResult get(Future<SceneResult> f) throws IOException, InterruptedException {
+        try {
+            return f.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof UncheckedIOException io) {
+                throw io.getCause();
+            }
+            throw new IllegalStateException(e.getCause());
+        }
+    }
+}

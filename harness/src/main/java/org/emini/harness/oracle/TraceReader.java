@@ -1,0 +1,89 @@
+package org.emini.harness.oracle;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.emini.harness.run.Trace;
+
+/**
+ * Reads a trace file (harness/README.md, Trace format version 1) back into a {@link Trace}, whoever
+ * wrote it: the harness ({@code source: emini}) or the oracle ({@code source: pymunk}). Null values
+ * (NaN or infinity) come back as NaN; fields the reader does not know are ignored.
+ */
+public final class TraceReader {
+    private TraceReader() {
+    }
+
+    /**
+     * A trace read from disk.
+     *
+     * @param scene the scene id
+     * @param source who wrote it
+     * @param trace the samples
+     */
+    public record Read(String scene, String source, Trace trace) {
+    }
+
+    /** Reads a trace file; refuses another format or version. */
+    public static Read read(Path file) throws IOException {
+        try (Reader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            return parse(JsonParser.parseReader(in).getAsJsonObject(), file.toString());
+        }
+    }
+
+    static Read parse(JsonObject doc, String shown) throws IOException {
+        if (!"emini-trace".equals(string(doc, "format")) || doc.get("version") == null
+                || doc.get("version").getAsInt() != 1) {
+            throw new IOException(shown + ": not an emini-trace version 1");
+        }
+        double timestep = doc.get("timestep").getAsDouble();
+        JsonArray ticks = doc.getAsJsonArray("tick");
+        JsonObject bodies = doc.getAsJsonObject("bodies");
+        JsonObject metrics = doc.getAsJsonObject("metrics");
+        List<String> bodyNames = new ArrayList<>(bodies.keySet());
+        List<String> metricChannels = new ArrayList<>(metrics.keySet());
+        Trace trace = new Trace(timestep, bodyNames, metricChannels);
+        List<JsonArray> columns = new ArrayList<>();
+        for (String b : bodyNames) {
+            JsonObject body = bodies.getAsJsonObject(b);
+            for (String f : Trace.BODY_FIELDS) {
+                JsonArray c = body.getAsJsonArray(f);
+                if (c == null) {
+                    throw new IOException(shown + ": body " + b + " has no column " + f);
+                }
+                columns.add(c);
+            }
+        }
+        for (Map.Entry<String, JsonElement> m : metrics.entrySet()) {
+            columns.add(m.getValue().getAsJsonArray());
+        }
+        for (int i = 0; i < ticks.size(); i++) {
+            double[] row = new double[columns.size()];
+            for (int c = 0; c < row.length; c++) {
+                JsonArray col = columns.get(c);
+                if (col.size() != ticks.size()) {
+                    throw new IOException(shown + ": column " + trace.channels().get(c) + " has " + col.size()
+                            + " values for " + ticks.size() + " samples");
+                }
+                JsonElement v = col.get(i);
+                row[c] = v.isJsonNull() ? Double.NaN : v.getAsDouble();
+            }
+            trace.add(ticks.get(i).getAsLong(), row);
+        }
+        return new Read(string(doc, "scene"), string(doc, "source"), trace);
+    }
+
+    private static String string(JsonObject o, String key) {
+        JsonElement e = o.get(key);
+        return e == null || e.isJsonNull() ? null : e.getAsString();
+    }
+}

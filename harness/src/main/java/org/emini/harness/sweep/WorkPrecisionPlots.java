@@ -1,0 +1,91 @@
+package org.emini.harness.sweep;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.function.ToDoubleFunction;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.VectorGraphicsEncoder;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * Log-log work-precision plots drawn with XChart as SVG: per scene, error over the whole run against
+ * cost, error at the final time against cost and, where the scene conserves energy or momentum, their
+ * drift against cost; one line per engine and iteration count, its points the timesteps. Lower left
+ * is better. Points that are zero, NaN or unstable cannot be drawn on log axes and are left out.
+ */
+public final class WorkPrecisionPlots {
+    private WorkPrecisionPlots() {
+    }
+
+    /** The file name stem of a scene's plots. */
+    public static String stem(String scene) {
+        return scene.replace('/', '_');
+    }
+
+    /**
+     * Writes every plot the points allow.
+     *
+     * @return the number of files written
+     */
+    public static int write(List<SweepPoint> points, Path dir) throws IOException {
+        System.setProperty("java.awt.headless", "true");
+        Files.createDirectories(dir);
+        Map<String, List<SweepPoint>> byScene = new TreeMap<>();
+        for (SweepPoint p : points) {
+            byScene.computeIfAbsent(p.scene(), s -> new ArrayList<>()).add(p);
+        }
+        int n = 0;
+        for (Map.Entry<String, List<SweepPoint>> e : byScene.entrySet()) {
+            String ref = e.getValue().stream().map(SweepPoint::reference).filter(r -> !r.isEmpty()).findFirst().orElse("");
+            String against = ref.startsWith("closedForm:") ? "closed form " + ref.substring(11) : "tightest setting " + ref.replace("self:", "");
+            n += plot(e.getValue(), SweepPoint::maxError, e.getKey() + ": whole-run error vs " + against,
+                    "max error over the run (px)", dir.resolve(stem(e.getKey()) + "-error"));
+            n += plot(e.getValue(), SweepPoint::finalError, e.getKey() + ": final-time error vs " + against,
+                    "error at the final time (px)", dir.resolve(stem(e.getKey()) + "-final"));
+            n += plot(e.getValue(), SweepPoint::energyDrift, e.getKey() + ": energy drift vs cost",
+                    "max |E - E0| / max KE", dir.resolve(stem(e.getKey()) + "-energy"));
+            n += plot(e.getValue(), SweepPoint::momentumDrift, e.getKey() + ": momentum drift vs cost",
+                    "max |p - p0| / max |p|", dir.resolve(stem(e.getKey()) + "-momentum"));
+        }
+        return n;
+    }
+
+    private static int plot(List<SweepPoint> points, ToDoubleFunction<SweepPoint> y, String title, String yTitle,
+                            Path stem) throws IOException {
+        Map<String, List<SweepPoint>> lines = new TreeMap<>();
+        for (SweepPoint p : points) {
+            double v = y.applyAsDouble(p);
+            if (p.status().equals("ok") && v > 0 && Double.isFinite(v) && p.costSeconds() > 0) {
+                lines.computeIfAbsent(String.format("%s, %2d iterations", p.engine(), p.iterations()), k -> new ArrayList<>()).add(p);
+            }
+        }
+        if (lines.isEmpty()) {
+            Files.deleteIfExists(stem.resolveSibling(stem.getFileName() + ".svg"));
+            return 0;
+        }
+        XYChart chart = new XYChartBuilder().width(640).height(420).title(title)
+                .xAxisTitle("cost: wall seconds per simulated second").yAxisTitle(yTitle).build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideS);
+        chart.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Horizontal);
+        for (Map.Entry<String, List<SweepPoint>> line : lines.entrySet()) {
+            List<SweepPoint> ps = new ArrayList<>(line.getValue());
+            ps.sort(Comparator.comparingInt(SweepPoint::rate));
+            double[] xs = ps.stream().mapToDouble(SweepPoint::costSeconds).toArray();
+            double[] ys = ps.stream().mapToDouble(y).toArray();
+            var s = chart.addSeries(line.getKey(), xs, ys);
+            s.setMarker(line.getKey().startsWith("pymunk") ? SeriesMarkers.DIAMOND : SeriesMarkers.CIRCLE);
+        }
+        VectorGraphicsEncoder.saveVectorGraphic(chart, stem.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
+        return 1;
+    }
+}

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Opens a written dashboard (REPORTS/index.html) from the file system in headless Chromium, lets the
+# page's own self-test (#selftest) run (it starts the replay and checks every section), and fails
+# unless the page reports no script errors, every section filled, the plots loaded and the replay
+# moving. Installs Debian's chromium first when /usr/bin/chromium is missing.
+#   harness/src/test/browser/check-dashboard.sh REPORTS [SCREENSHOT.png]
+set -euo pipefail
+reports=$(cd "$1" && pwd)
+shot=${2:-}
+CHROMIUM=${CHROMIUM:-/usr/bin/chromium}
+if [ ! -x "$CHROMIUM" ]; then
+  echo "check-dashboard: installing Debian's chromium (once)" >&2
+  if [ "$(id -u)" = 0 ]; then SUDO=(); else SUDO=(sudo); fi
+  "${SUDO[@]}" apt-get install -y chromium >/dev/null 2>&1 || { "${SUDO[@]}" apt-get update >/dev/null && "${SUDO[@]}" apt-get install -y chromium >/dev/null; }
+fi
+profile=$(mktemp -d)
+trap 'rm -rf "$profile"' EXIT
+# Flags that work on a machine with no network (see README, Testing the dashboard).
+flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking
+       --disable-component-update --disable-sync --user-data-dir="$profile" --allow-file-access-from-files)
+dom=$(timeout 120 "$CHROMIUM" "${flags[@]}" --virtual-time-budget=8000 --dump-dom "file://$reports/index.html#selftest" 2>/dev/null)
+result=$(printf '%s' "$dom" | sed -n 's/.*<pre id="selftest-result"[^>]*>\(.*\)<\/pre>.*/\1/p' | sed 's/&quot;/"/g; s/&amp;/\&/g')
+if [ -z "$result" ]; then
+  echo "check-dashboard: the page's self-test did not report (script error or not run)" >&2
+  exit 1
+fi
+echo "check-dashboard: $result"
+if [ -n "$shot" ]; then
+  timeout 120 "$CHROMIUM" "${flags[@]}" --window-size=1200,2400 --screenshot="$shot" "file://$reports/index.html" >/dev/null 2>&1 || true
+fi
+case "$result" in
+  *'"ok":true'*) exit 0 ;;
+  *) echo "check-dashboard: FAILED" >&2; exit 1 ;;
+esac

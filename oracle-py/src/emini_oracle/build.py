@@ -1,0 +1,347 @@
+"""Builds a pymunk Space from a Scene. Every mapping decision is documented in oracle-py/MAPPING.md.
+
+What pymunk cannot express is not dropped silently: it is listed in `Built.unsupported` (the element
+is left out of the simulation; `affectsBodies` says whether that changes the bodies' motion) or in
+`Built.approximations` (the element is simulated, with different semantics).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import pymunk
+
+from .scene import Body, Scene, Shape
+
+# Collision categories (pymunk ShapeFilter bits); see MAPPING.md, Collision layers.
+LANDSCAPE_BIT = 1 << 31
+NON_INTERACTING_BIT = 1 << 30
+MAX_LAYER_CLASSES = 30
+ALL_BITS = 0xFFFFFFFF
+
+# Chipmunk's own default, set explicitly: the fraction of overlap left after one second.
+COLLISION_BIAS = pow(1.0 - 0.1, 60.0)
+# collision_slop = SLOP_PER_LENGTH x the smallest dynamic body (Chipmunk's default 0.1 px would leave a
+# resting body at its impact depth; verification-notes.md, pymunk pitfalls).
+SLOP_PER_LENGTH = 1e-5
+
+
+@dataclass
+class Note:
+    element: str
+    path: str
+    reason: str
+    affects_bodies: bool = True
+
+    def to_json(self):
+        return {"element": self.element, "path": self.path, "reason": self.reason,
+                "affectsBodies": self.affects_bodies}
+
+
+@dataclass
+class Link:
+    """A pin joint or rigid link, for the constraintError metric: world anchors from local ones."""
+    kind: str  # "pin" (anchor distance) or "rigid" (|d - d0|)
+    a: pymunk.Body
+    b: pymunk.Body
+    anchor_a: tuple
+    anchor_b: tuple
+    rest: float = 0.0
+
+
+@dataclass
+class Spring:
+    """A spring with stiffness, for the spring potential term of energy.total."""
+    a: pymunk.Body
+    b: pymunk.Body
+    anchor_a: tuple
+    anchor_b: tuple
+    rest: float
+    stiffness: float
+
+
+@dataclass
+class Built:
+    scene: Scene
+    space: pymunk.Space
+    bodies: dict  # scene name -> pymunk.Body, in creation order
+    specs: dict  # scene name -> scene.Body
+    shapes: dict  # scene name -> [pymunk.Shape]
+    links: list = field(default_factory=list)
+    springs: list = field(default_factory=list)
+    unsupported: list = field(default_factory=list)
+    approximations: list = field(default_factory=list)
+    settings: dict = field(default_factory=dict)
+    damping: tuple = (1.0, 1.0)  # velocity kept per tick (lateral, rotational), applied after the step
+
+    def dynamic(self):
+        return [(n, b) for n, b in self.bodies.items() if b.body_type == pymunk.Body.DYNAMIC]
+
+    def gravity_affected(self, name):
+        return self.specs[name].state.gravity
+
+
+# ------------------------------------------------------------------------------------------------
+# Shapes: geometry in body-local coordinates, mass and moment about the body origin
+
+def _rotate(v, angle):
+    c, s = math.cos(angle), math.sin(angle)
+    return (c * v[0] - s * v[1], s * v[0] + c * v[1])
+
+
+def flatten(shape: Shape, ox=0.0, oy=0.0, angle=0.0, mass_scale=1.0):
+    """The convex pieces of a shape, each ("circle", centre, radius, mass) or ("poly", vertices, mass),
+    in body-local coordinates. A multi-shape's parts keep their own masses, scaled so that they add up
+    to the multi-shape's mass."""
+    def place(v):
+        r = _rotate(v, angle)
+        return (r[0] + ox, r[1] + oy)
+
+    m = shape.mass * mass_scale
+    if shape.kind == "circle":
+        return [("circle", place((0.0, 0.0)), shape.radius, m)]
+    if shape.kind == "rectangle":
+        w, h = shape.width / 2, shape.height / 2
+        return [("poly", [place(v) for v in ((-w, -h), (w, -h), (w, h), (-w, h))], m)]
+    if shape.kind == "regularPolygon":
+        n, r = shape.sides, shape.radius
+        verts = [(r * math.cos(2 * math.pi * i / n), r * math.sin(2 * math.pi * i / n)) for i in range(n)]
+        return [("poly", [place(v) for v in verts], m)]
+    if shape.kind == "polygon":
+        return [("poly", [place(v) for v in shape.vertices], m)]
+    # multiShape: parts placed by offset and angle, nested multi-shapes composed.
+    total = sum(p[0].mass for p in shape.parts)
+    scale = m / total if total > 0 else 0.0
+    out = []
+    for part, pox, poy, pangle in shape.parts:
+        po = place((pox, poy))
+        out.extend(flatten(part, po[0], po[1], angle + pangle, scale))
+    return out
+
+
+def moment(pieces):
+    """Moment of inertia about the body origin: uniform density over each piece (as the engine)."""
+    total = 0.0
+    for p in pieces:
+        if p[0] == "circle":
+            total += pymunk.moment_for_circle(p[3], 0, p[2], p[1])
+        else:
+            total += pymunk.moment_for_poly(p[2], p[1])
+    return total
+
+
+def local_aabb(pieces):
+    """(min x, min y, max x, max y) of the pieces in body-local coordinates at angle 0."""
+    xs, ys = [], []
+    for p in pieces:
+        if p[0] == "circle":
+            (cx, cy), r = p[1], p[2]
+            xs += [cx - r, cx + r]
+            ys += [cy - r, cy + r]
+        else:
+            xs += [v[0] for v in p[1]]
+            ys += [v[1] for v in p[1]]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+# ------------------------------------------------------------------------------------------------
+# The space
+
+def build(scene: Scene) -> Built:
+    w = scene.world
+    space = pymunk.Space()
+    space.gravity = w.gravity
+    space.iterations = w.iterations
+    space.collision_bias = COLLISION_BIAS
+    space.damping = 1.0  # Emini's per-tick damping is applied after each step (Built.damping)
+    space.idle_speed_threshold = 0.0
+    space.sleep_time_threshold = float("inf")  # no sleeping: Emini has none
+    built = Built(scene, space, {}, {}, {})
+    built.damping = (1.0 - w.damping_lateral, 1.0 - w.damping_rotational)
+    if w.dynamic_iterations:
+        built.approximations.append(Note("world.dynamicIterations", "$.world.dynamicIterations",
+                                         "pymunk always runs all its iterations (Emini's fixed mode)"))
+    if w.solver:
+        built.approximations.append(Note("world.solver", "$.world.solver",
+                                         "engine tunables (" + ", ".join(sorted(w.solver)) + ") have no pymunk "
+                                         "counterpart; pymunk uses the settings of MAPPING.md"))
+
+    filters = _filters(scene)
+    smallest = math.inf
+    no_gravity = _no_gravity_velocity
+    for spec in scene.bodies:
+        pieces = flatten(spec.shape)
+        s = spec.state
+        if s.static:
+            body = pymunk.Body(body_type=pymunk.Body.STATIC)
+        else:
+            inertia = moment(pieces) if s.rotatable else math.inf
+            body = pymunk.Body(spec.shape.mass, inertia)
+            x0, y0, x1, y1 = local_aabb(pieces)
+            smallest = min(smallest, x1 - x0, y1 - y0)
+        body.position = (spec.x, spec.y)
+        body.angle = s.angle
+        if not s.static:
+            body.velocity = (s.vx, s.vy)
+            body.angular_velocity = s.angular_velocity if s.rotatable else 0.0
+            if not s.gravity:
+                body.velocity_func = no_gravity
+        shapes = []
+        for p in pieces:
+            sh = pymunk.Circle(body, p[2], p[1]) if p[0] == "circle" else pymunk.Poly(body, p[1])
+            sh.friction = spec.shape.friction
+            sh.elasticity = spec.shape.elasticity
+            sh.filter = filters(spec)
+            shapes.append(sh)
+        space.add(body, *shapes)
+        built.bodies[spec.name] = body
+        built.specs[spec.name] = spec
+        built.shapes[spec.name] = shapes
+
+    slop = SLOP_PER_LENGTH * (smallest if math.isfinite(smallest) and smallest > 0 else 1.0)
+    space.collision_slop = slop
+    built.settings = {"timestep": w.timestep, "iterations": w.iterations, "collision_slop": slop,
+                      "collision_bias": COLLISION_BIAS, "collision_persistence": space.collision_persistence,
+                      "damping": 1.0, "perTickDamping": {"lateral": w.damping_lateral,
+                                                         "rotational": w.damping_rotational}}
+
+    el = scene.elements
+    if "landscape" in el:
+        _landscape(built, el["landscape"])
+    if "joints" in el:
+        _joints(built, el["joints"])
+    if "springs" in el:
+        _springs(built, el["springs"])
+    if "motors" in el:
+        _motors(built, el["motors"])
+    if "particles" in el:
+        built.unsupported.append(Note(
+            "particles", "$.particles",
+            "pymunk has no particle emitters; Emini's particles never act on bodies, so the bodies' motion "
+            "and every metric are unchanged", affects_bodies=False))
+    if w.simulation_area is not None:
+        built.unsupported.append(Note(
+            "world.simulationArea", "$.world.simulationArea",
+            "pymunk simulates every body; Emini freezes bodies outside the x range "
+            f"[{w.simulation_area['start']}, {w.simulation_area['end']}] (checked at each sample: see "
+            "affectsBodies)", affects_bodies=False))
+    return built
+
+
+def _no_gravity_velocity(body, gravity, damping, dt):
+    pymunk.Body.update_velocity(body, (0.0, 0.0), damping, dt)
+
+
+def _filters(scene: Scene):
+    """ShapeFilter per body: Emini's "bodies sharing a layer bit do not collide", as categories and masks.
+
+    Each distinct layer set of an interacting body gets one category bit; its mask holds the bits of
+    every layer set it shares no bit with (the empty set shares none, so layer-less bodies collide with
+    everything interacting). Non-interacting bodies only meet the landscape, which meets everything.
+    """
+    sets = []
+    for b in scene.bodies:
+        key = frozenset(b.state.layers)
+        if b.state.interacting and key not in sets:
+            sets.append(key)
+    if len(sets) > MAX_LAYER_CLASSES:
+        raise UnsupportedScene(f"{len(sets)} distinct collision layer sets; the filter mapping holds "
+                               f"{MAX_LAYER_CLASSES}")
+    masks = {}
+    for i, a in enumerate(sets):
+        m = LANDSCAPE_BIT
+        for j, b in enumerate(sets):
+            if not (a & b):
+                m |= 1 << j
+        masks[a] = pymunk.ShapeFilter(categories=1 << i, mask=m)
+    non_interacting = pymunk.ShapeFilter(categories=NON_INTERACTING_BIT, mask=LANDSCAPE_BIT)
+
+    def of(spec: Body):
+        return masks[frozenset(spec.state.layers)] if spec.state.interacting else non_interacting
+    return of
+
+
+class UnsupportedScene(Exception):
+    """The oracle cannot run this scene at all."""
+
+
+def _landscape(built: Built, land):
+    static = built.space.static_body
+    segments = []
+    for i, seg in enumerate(land["segments"]):
+        s = pymunk.Segment(static, tuple(seg["from"]), tuple(seg["to"]), 0.0)
+        s.friction = float(land.get("friction", 0.25))
+        s.elasticity = float(land.get("elasticity", 0.0))
+        s.filter = pymunk.ShapeFilter(categories=LANDSCAPE_BIT, mask=ALL_BITS)
+        segments.append(s)
+        face = seg.get("face", "none")
+        if face != "none":
+            built.approximations.append(Note(
+                "landscape face", f"$.landscape.segments[{i}].face",
+                f"face '{face}' makes Emini's segment one-sided; pymunk segments are two-sided, so a body "
+                "reaching it from the open side is stopped instead of passing"))
+    built.space.add(*segments)
+    built.shapes["$landscape"] = segments
+
+
+def _anchor(j, key):
+    return tuple(map(float, j.get(key, (0.0, 0.0))))
+
+
+def _joints(built: Built, joints):
+    for i, j in enumerate(joints):
+        a, b = built.bodies[j["bodyA"]], built.bodies[j["bodyB"]]
+        if "at" in j:
+            at = tuple(map(float, j["at"]))
+            la, lb = a.world_to_local(at), b.world_to_local(at)
+        else:
+            la, lb = _anchor(j, "anchorA"), _anchor(j, "anchorB")
+        pivot = pymunk.PivotJoint(a, b, la, lb)
+        parts = [pivot]
+        if j.get("fixed", False):
+            # Lock the relative angle the bodies have now (the original's fixed joint).
+            parts.append(pymunk.GearJoint(a, b, b.angle - a.angle, 1.0))
+        for c in parts:
+            c.collide_bodies = bool(j.get("collide", False))
+        built.space.add(*parts)
+        built.links.append(Link("pin", a, b, tuple(la), tuple(lb)))
+
+
+def _springs(built: Built, springs):
+    for i, s in enumerate(springs):
+        a, b = built.bodies[s["bodyA"]], built.bodies[s["bodyB"]]
+        la, lb = _anchor(s, "anchorA"), _anchor(s, "anchorB")
+        wa, wb = a.local_to_world(la), b.local_to_world(lb)
+        rest = float(s["restLength"]) if "restLength" in s else (wb - wa).length
+        k = float(s.get("stiffness", 0.0))
+        if k > 0:
+            c = pymunk.DampedSpring(a, b, la, lb, rest, k, float(s.get("damping", 0.0)))
+            built.springs.append(Spring(a, b, la, lb, rest, k))
+        else:
+            c = pymunk.PinJoint(a, b, la, lb)
+            c.distance = rest
+            built.links.append(Link("rigid", a, b, la, lb, rest))
+            if float(s.get("damping", 0.0)) > 0:
+                built.approximations.append(Note("spring damping", f"$.springs[{i}].damping",
+                                                 "a rigid link (stiffness 0) has no damping in pymunk's PinJoint"))
+        c.collide_bodies = bool(s.get("collide", True))
+        built.space.add(c)
+
+
+def _motors(built: Built, motors):
+    h = built.scene.world.timestep
+    for i, m in enumerate(motors):
+        body = built.bodies[m["body"]]
+        if "velocity" in m:
+            built.unsupported.append(Note(
+                "linear motor", f"$.motors[{i}]",
+                "pymunk has no motor that drives a linear velocity; the motor is left out, so its body is not "
+                "driven"))
+            continue
+        if body.body_type != pymunk.Body.DYNAMIC:
+            continue  # the original: a motor on a static body does nothing
+        # SimpleMotor(a, b, rate) drives a.w - b.w to rate; maxImpulse caps the impulse per tick.
+        motor = pymunk.SimpleMotor(body, built.space.static_body, float(m["angularVelocity"]))
+        motor.max_force = float(m["maxImpulse"]) / h
+        built.space.add(motor)

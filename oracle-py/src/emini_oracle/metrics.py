@@ -1,0 +1,291 @@
+"""The harness's metrics (scenarios/README.md, Metrics), computed on a pymunk space.
+
+Same definitions, same channels, same sampling as harness/.../metrics/*.java. Energy is computed here
+from mass, moment and velocity: pymunk's Body.kinetic_energy omits the factor 1/2.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pymunk
+
+from .build import Built, flatten, local_aabb
+
+_TYPE_ORDER = {pymunk.Circle: 0, pymunk.Segment: 1, pymunk.Poly: 2}
+
+try:  # Chipmunk's C functions through pymunk's cffi module: 3x faster than the properties
+    from pymunk._chipmunk import lib as _cp
+
+    def _read(body):
+        h = body._body
+        p = _cp.cpBodyGetPosition(h)
+        v = _cp.cpBodyGetVelocity(h)
+        return (p.x, p.y, _cp.cpBodyGetAngle(h), v.x, v.y, _cp.cpBodyGetAngularVelocity(h))
+
+    def _collide_distances(a, b):
+        found = _cp.cpShapesCollide(a._shape, b._shape)
+        return [found.points[i].distance for i in range(found.count)]
+except (ImportError, AttributeError):  # pragma: no cover - other pymunk builds
+    def _read(body):
+        p, v = body.position, body.velocity
+        return (p.x, p.y, body.angle, v.x, v.y, body.angular_velocity)
+
+    def _collide_distances(a, b):
+        try:
+            return [p.distance for p in a.shapes_collide(b).points]
+        except AssertionError:  # pymunk asserts when the shapes do not touch
+            return []
+
+
+class Snapshot:
+    """The state (x, y, angle, vx, vy, ω) of every dynamic body, read once per tick for all metrics."""
+
+    def __init__(self, built: Built):
+        self.built = built
+        dyn = built.dynamic()
+        self.names = [n for n, _ in dyn]
+        self.bodies = [b for _, b in dyn]
+        self.index = {n: i for i, n in enumerate(self.names)}
+        self.mass = [b.mass for b in self.bodies]
+        self.moment = [b.moment for b in self.bodies]
+        self.rotatable = [built.specs[n].state.rotatable for n in self.names]
+        self.gravity = [built.specs[n].state.gravity for n in self.names]
+        self.tick = None
+        self.states = []
+
+    def at(self, tick):
+        if tick != self.tick:
+            self.states = [_read(b) for b in self.bodies]
+            self.tick = tick
+        return self.states
+
+
+def create(spec, built: Built, snapshot: Snapshot):
+    return {"energy": Energy, "linearMomentum": LinearMomentum, "angularMomentum": AngularMomentum,
+            "penetration": Penetration, "constraintError": ConstraintError, "tunnelling": Tunnelling,
+            "stability": Stability}[spec.kind](built, spec, snapshot)
+
+
+class Metric:
+    def after_tick(self, tick):
+        pass
+
+    def sample(self, tick):
+        raise NotImplementedError
+
+
+class Energy(Metric):
+    """kinetic Σ ½m|v|² + ½Iω² (no rotational term for non-rotatable bodies); potential Σ −m(g·r) over
+    gravity-affected dynamic bodies; total = kinetic + potential + spring potential Σ ½k(d − d₀)²."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.built = built
+        self.snap = snapshot
+
+    def sample(self, tick):
+        gx, gy = self.built.space.gravity
+        kinetic = potential = 0.0
+        s = self.snap
+        for (x, y, _, vx, vy, w), m, inertia, rot, grav in zip(s.at(tick), s.mass, s.moment, s.rotatable,
+                                                               s.gravity):
+            kinetic += 0.5 * m * (vx * vx + vy * vy)
+            if rot and w != 0:
+                kinetic += 0.5 * inertia * w * w
+            if grav:
+                potential -= m * (gx * x + gy * y)
+        springs = 0.0
+        for s in self.built.springs:
+            d = (s.b.local_to_world(s.anchor_b) - s.a.local_to_world(s.anchor_a)).length
+            springs += 0.5 * s.stiffness * (d - s.rest) ** 2
+        return [kinetic, potential, kinetic + potential + springs]
+
+
+class LinearMomentum(Metric):
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.snap = snapshot
+
+    def sample(self, tick):
+        px = py = 0.0
+        for st, m in zip(self.snap.at(tick), self.snap.mass):
+            px += m * st[3]
+            py += m * st[4]
+        return [px, py]
+
+
+class AngularMomentum(Metric):
+    """Σ Iω + m((x − px)vy − (y − py)vx) about spec.about; positive toward growing angles."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.snap = snapshot
+        self.px, self.py = spec.about
+
+    def sample(self, tick):
+        total = 0.0
+        s = self.snap
+        for (x, y, _, vx, vy, w), m, inertia, rot in zip(s.at(tick), s.mass, s.moment, s.rotatable):
+            spin = inertia * w if rot and w != 0 else 0.0
+            total += spin + m * ((x - self.px) * vy - (y - self.py) * vx)
+        return [total]
+
+
+class Penetration(Metric):
+    """For every pair the space holds a contact (arbiter) for, the narrow phase is run again on the
+    current poses; points = contact points with distance < 0, max = the deepest, mean = their mean.
+
+    The pairs are those between a `begin` and a `separate` callback (Chipmunk's touching arbiters)."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.pairs = {}
+
+        def begin(arbiter, space, data):
+            a, b = arbiter.shapes
+            # shapes_collide gets the distance's sign wrong unless the shapes come in Chipmunk's type
+            # order (circle, segment, polygon): Chipmunk flips the normal but not the points.
+            if _TYPE_ORDER[type(a)] > _TYPE_ORDER[type(b)]:
+                a, b = b, a
+            self.pairs[(id(a), id(b))] = (a, b)
+
+        def separate(arbiter, space, data):
+            a, b = arbiter.shapes
+            self.pairs.pop((id(a), id(b)), None)
+            self.pairs.pop((id(b), id(a)), None)
+
+        built.space.on_collision(None, None, begin=begin, separate=separate)
+
+    def sample(self, tick):
+        deepest = total = 0.0
+        points = 0
+        for a, b in self.pairs.values():
+            for d in _collide_distances(a, b):
+                if d < 0:
+                    points += 1
+                    total -= d
+                    if -d > deepest:
+                        deepest = -d
+        return [deepest, total / points if points else 0.0, float(points)]
+
+
+class ConstraintError(Metric):
+    """Distance between the two anchors of each pin joint and |d − d₀| of each rigid link (px)."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.links = built.links
+
+    def sample(self, tick):
+        errors = []
+        for link in self.links:
+            d = (link.b.local_to_world(link.anchor_b) - link.a.local_to_world(link.anchor_a)).length
+            errors.append(d if link.kind == "pin" else abs(d - link.rest))
+        if not errors:
+            return [0.0, 0.0]
+        return [max(errors), sum(errors) / len(errors)]
+
+
+def _orient(ax, ay, bx, by, cx, cy):
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+
+
+def crosses(px, py, qx, qy, ax, ay, bx, by):
+    """Whether the path p→q strictly crosses the segment a→b (harness Segments.cross)."""
+    d1 = _orient(ax, ay, bx, by, px, py)
+    d2 = _orient(ax, ay, bx, by, qx, qy)
+    if not ((d1 < 0 and d2 > 0) or (d1 > 0 and d2 < 0)):
+        return False
+    d3 = _orient(px, py, qx, qy, ax, ay)
+    d4 = _orient(px, py, qx, qy, bx, by)
+    return (d3 <= 0 and d4 >= 0) or (d3 >= 0 and d4 <= 0)
+
+
+def _side(ax, ay, bx, by, px, py):
+    o = _orient(ax, ay, bx, by, px, py)
+    return (o > 0) - (o < 0)
+
+
+class Tunnelling(Metric):
+    """Times, so far, the centre of a watched body crossed a wall line within one tick. A wall body's
+    line is the long axis of its shape's bounding box (at angle 0) through the box centre, moving with
+    the body; a centre landing on the line counts as still on its previous side."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.snap = snapshot
+        watched = list(spec.bodies) if spec.bodies else [n for n, _ in built.dynamic()]
+        self.walls = []
+        for w in spec.walls:
+            if isinstance(w, str):
+                x0, y0, x1, y1 = local_aabb(flatten(built.specs[w].shape))
+                cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+                line = ((x0, cy), (x1, cy)) if x1 - x0 >= y1 - y0 else ((cx, y0), (cx, y1))
+                self.walls.append((built.bodies[w], line))
+                if w in watched:
+                    watched.remove(w)
+            else:
+                self.walls.append((None, w))
+        # Watched bodies by index in the snapshot (a static body never moves: its own position).
+        self.watched = [snapshot.index.get(n, built.bodies[n]) for n in watched]
+        self.previous = [[self.position(w, None) for w in self.watched] for _ in self.walls]
+        self.count = 0
+
+    def position(self, w, states):
+        if isinstance(w, int):
+            st = states[w] if states is not None else _read(self.snap.bodies[w])
+            return st[0], st[1]
+        return tuple(w.position)
+
+    def after_tick(self, tick):
+        states = self.snap.at(tick)
+        for k, (body, line) in enumerate(self.walls):
+            if body is None:
+                (ax, ay), (bx, by) = line
+            else:
+                ax, ay = body.local_to_world(line[0])
+                bx, by = body.local_to_world(line[1])
+            prev = self.previous[k]
+            for i, w in enumerate(self.watched):
+                x, y = self.position(w, states)
+                px, py = prev[i]
+                if crosses(px, py, x, y, ax, ay, bx, by):
+                    self.count += 1
+                if _side(ax, ay, bx, by, x, y) != 0:
+                    prev[i] = (x, y)
+
+    def sample(self, tick):
+        return [float(self.count)]
+
+
+def _finite(x, y, a, vx, vy, w):
+    return math.isfinite(x + y + a + vx + vy + w) or all(map(math.isfinite, (x, y, a, vx, vy, w)))
+
+
+class Stability(Metric):
+    """Worst values since the previous sample: largest |v|, largest |ω|, most non-finite bodies."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.snap = snapshot
+        self.max_speed = self.max_angular = 0.0
+        self.non_finite = 0
+        self.after_tick(0)
+
+    def after_tick(self, tick):
+        bad = 0
+        speed2 = self.max_speed * self.max_speed
+        angular = self.max_angular
+        for st in self.snap.at(tick):
+            if not _finite(*st):
+                bad += 1
+                continue
+            v2 = st[3] * st[3] + st[4] * st[4]
+            if v2 > speed2:
+                speed2 = v2
+            if abs(st[5]) > angular:
+                angular = abs(st[5])
+        self.max_speed = math.sqrt(speed2)
+        self.max_angular = angular
+        self.non_finite = max(self.non_finite, bad)
+
+    def sample(self, tick):
+        out = [self.max_speed, self.max_angular, float(self.non_finite)]
+        self.max_speed = self.max_angular = 0.0
+        self.non_finite = 0
+        self.after_tick(tick)
+        return out
