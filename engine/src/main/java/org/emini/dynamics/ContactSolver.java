@@ -272,8 +272,10 @@ final class ContactSolver {
      * @param invH 1 / substep length
      * @param maxPush cap on the push-out speed (px/s)
      * @param slop penetration left alone so resting contacts do not jitter (px)
+     * @param trackChange measure the largest velocity change into {@link #lastRelaxChange} (only the
+     *     dynamic-iteration test reads it; the division per point it costs is skipped otherwise)
      */
-    void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop) {
+    void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop, boolean trackChange) {
         float[] st = bodies.state;
         float maxChange = 0f;
         for (int k = 0; k < count; k++) {
@@ -352,9 +354,11 @@ final class ContactSolver {
                         if (d2 > f[p2 + MAXIMP]) {
                             f[p2 + MAXIMP] = d2;
                         }
-                        float dv1 = (d1 < 0f ? -d1 : d1) / f[p1 + NMASS];
-                        float dv2 = (d2 < 0f ? -d2 : d2) / f[p2 + NMASS];
-                        maxChange = Math.max(maxChange, Math.max(dv1, dv2));
+                        if (trackChange) {
+                            float dv1 = (d1 < 0f ? -d1 : d1) / f[p1 + NMASS];
+                            float dv2 = (d2 < 0f ? -d2 : d2) / f[p2 + NMASS];
+                            maxChange = Math.max(maxChange, Math.max(dv1, dv2));
+                        }
                         float px = (d1 + d2) * nx;
                         float py = (d1 + d2) * ny;
                         vax -= mA * px;
@@ -403,7 +407,7 @@ final class ContactSolver {
                 if (d > f[po + MAXIMP]) {
                     f[po + MAXIMP] = d;
                 }
-                if (nm > 0f) {
+                if (trackChange && nm > 0f) {
                     float dv = d / nm;
                     dv = dv < 0f ? -dv : dv;
                     if (dv > maxChange) {

@@ -3,6 +3,8 @@ package org.emini.dynamics;
 import org.emini.collision.BroadPhase;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
+import org.emini.particle.ParticleEmitter;
+import org.emini.particle.ParticleSystem;
 
 /**
  * The simulated world: bodies, gravity, the solver's settings, and {@link #tick()}.
@@ -54,6 +56,7 @@ public final class World {
     private Event[] events = new Event[4];
     private int eventCount;
     private PhysicsEventListener eventListener;
+    private final ParticleSystem particles = new ParticleSystem();
     private final Softness soft = new Softness();
     private final Softness staticSoft = new Softness();
     private final float[] aabb = new float[4];
@@ -275,6 +278,7 @@ public final class World {
         }
         contacts.destroyContactsOf(body);
         removeConstraintsOf(body);
+        particles.removeEmittersOf(body);
         broadPhase.destroyProxy(body.proxyId);
         slots[body.slot] = null;
         if (freeSlotCount == freeSlots.length) {
@@ -715,6 +719,57 @@ public final class World {
     }
 
     // ---------------------------------------------------------------------------------------------
+    // Particle emitters
+
+    /**
+     * Adds a particle emitter; its particles move at the end of every tick, after the bodies.
+     *
+     * @param emitter the emitter, in no other world; its body, if any, must be in this world
+     */
+    public void addParticleEmitter(ParticleEmitter emitter) {
+        Check.notNull("World.addParticleEmitter", "emitter", emitter);
+        Body b = emitter.getBody();
+        if (b != null && b.world != this) {
+            throw new IllegalArgumentException("World.addParticleEmitter: the emitter's body " + b + " is not in this world");
+        }
+        if (!particles.addEmitter(emitter)) {
+            throw new IllegalArgumentException("World.addParticleEmitter: " + emitter + " already belongs to a world");
+        }
+    }
+
+    /**
+     * Removes a particle emitter (removing its body does this too).
+     *
+     * @param emitter the emitter
+     * @return true when it was in this world
+     */
+    public boolean removeParticleEmitter(ParticleEmitter emitter) {
+        return particles.removeEmitter(emitter);
+    }
+
+    /**
+     * The number of particle emitters.
+     *
+     * @return the count
+     */
+    public int getParticleEmitterCount() {
+        return particles.getEmitterCount();
+    }
+
+    /**
+     * A particle emitter by its position in the world's list (insertion order).
+     *
+     * @param index 0 to {@link #getParticleEmitterCount()} − 1
+     * @return the emitter
+     */
+    public ParticleEmitter getParticleEmitter(int index) {
+        if (index < 0 || index >= particles.getEmitterCount()) {
+            throw new IndexOutOfBoundsException("World.getParticleEmitter: index " + index + " of " + particles.getEmitterCount());
+        }
+        return particles.getEmitter(index);
+    }
+
+    // ---------------------------------------------------------------------------------------------
     // Contacts
 
     /**
@@ -772,6 +827,9 @@ public final class World {
         }
         contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
         solve(dt);
+        if (particles.getEmitterCount() > 0) {
+            particles.step(this, dt);
+        }
         tickCount++;
         if (eventListener != null) {
             for (int i = 0; i < eventCount; i++) {
@@ -848,7 +906,7 @@ public final class World {
                 for (int c = 0; c < cn; c++) {
                     cs[c].solve(step, true);
                 }
-                contactSolver.solve(sb, true, invH, maxPush, slop);
+                contactSolver.solve(sb, true, invH, maxPush, slop, false);
             }
             sb.integratePositions(hh);
             if (!converged) {
@@ -856,7 +914,7 @@ public final class World {
                 for (int c = 0; c < cn; c++) {
                     change = Math.max(change, cs[c].solve(step, false));
                 }
-                contactSolver.solve(sb, false, invH, maxPush, slop);
+                contactSolver.solve(sb, false, invH, maxPush, slop, dynamicIterations);
                 change = Math.max(change, contactSolver.lastRelaxChange);
                 used++;
                 converged = dynamicIterations && change < tolerance;

@@ -5,12 +5,14 @@ import picocli.CommandLine.Command;
 
 /**
  * The harness command line: {@code validate} and {@code run} over scenario files and folders,
- * {@code compare} with the pymunk oracle and {@code expand} (scenes as the harness reads them).
+ * {@code compare} with the pymunk oracle, {@code expand} (scenes as the harness reads them) and
+ * {@code convert} between original world files and scene files.
  */
 @Command(name = "harness", mixinStandardHelpOptions = true, version = "emini harness 0.1.0",
         description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
         subcommands = {ValidateCommand.class, RunCommand.class, CompareCommand.class, ExpandCommand.class,
-                SweepCommand.class, StabilityCommand.class, DashboardCommand.class, CommandLine.HelpCommand.class})
+                SweepCommand.class, StabilityCommand.class, DashboardCommand.class, ConvertCommand.class,
+                CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @Override

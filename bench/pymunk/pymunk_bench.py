@@ -1,0 +1,157 @@
+"""Times pymunk on the benchmark scenes, through the oracle's scene reader and space builder (oracle-py/).
+
+Run by `./emini bench` (org.emini.bench.run.PymunkBench) with the oracle's environment
+(oracle-py/.venv). The method copies the JMH benchmark's: build the space from the scene file, run the
+untimed preroll (the scene's run duration unless --preroll is given) and check the scene, then time
+ticks in warm-up and measurement rounds; the figure is the process's CPU time per measured tick
+(time.thread_time), wall time beside it. pymunk runs at Chipmunk's default 10 iterations, sleeping off
+(the oracle's build), as the other peers run at their own defaults (bench/ENGINES.md).
+
+The check is the same as bench/src/main/java/org/emini/bench/check/Stability.java.
+
+    python pymunk_bench.py --root REPO --out FILE [--preroll N] [--warmups 3 --iterations 5 --seconds 1] SCENE_ID...
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import time
+from pathlib import Path
+
+PYMUNK_ITERATIONS = 10  # Chipmunk's default
+
+
+def poses(built, names):
+    out = []
+    for n in names:
+        b = built.bodies[n]
+        out.append((b.position.x, b.position.y, b.angle, math.hypot(b.velocity.x, b.velocity.y)))
+    return out
+
+
+def judge(scene, ticks, initial, now):
+    min_x, max_x, floor_top = math.inf, -math.inf, -math.inf
+    size = 0.0
+    for b in scene.bodies:
+        w, h = b.shape.size() if b.shape.kind != "multiShape" else (0.0, 0.0)
+        if b.state.static:
+            min_x = min(min_x, b.x - w / 2)
+            max_x = max(max_x, b.x + w / 2)
+            floor_top = max(floor_top, b.y - h / 2)
+        elif size == 0:
+            size = max(w, h)
+    stacking = scene.category == "stacking"
+    max_d = max_dx = max_dy = max_a = max_v = 0.0
+    escaped = non_finite = 0
+    for b, p0, p in zip(scene.bodies, initial, now):
+        if b.state.static:
+            continue
+        x, y, a, v = p
+        if not all(map(math.isfinite, (x, y, a))):
+            non_finite += 1
+            continue
+        max_d = max(max_d, math.hypot(x - p0[0], y - p0[1]))
+        max_dx = max(max_dx, abs(x - p0[0]))
+        max_dy = max(max_dy, abs(y - p0[1]))
+        max_a = max(max_a, abs(a - p0[2]))
+        max_v = max(max_v, v)
+        if min_x <= max_x and (x < min_x or x > max_x or y > floor_top):
+            escaped += 1
+    if non_finite:
+        verdict = "non-finite"
+    elif stacking:
+        if max_dx <= size / 4 and max_a < 0.1 and max_dy <= size:
+            verdict = "stable"
+        elif max_dx > size or max_dy > 2 * size or max_a > 0.5:
+            verdict = "collapsed"
+        else:
+            verdict = "drifted"
+    else:
+        verdict = "stable" if escaped == 0 else "escaped"
+    return {"ticks": ticks, "verdict": verdict, "maxDisplacementPx": max_d, "maxDxPx": max_dx, "maxDyPx": max_dy,
+            "bodySize": size, "maxAngle": max_a, "maxSpeed": max_v, "escaped": escaped, "nonFinite": non_finite}
+
+
+def measure(loader, build, root, scene_id, args):
+    entry = {"scene": scene_id, "engine": "pymunk", "status": "ok", "message": ""}
+    path = None
+    for ext in (".yaml", ".yml", ".json"):
+        if (root / "scenarios" / (scene_id + ext)).is_file():
+            path = root / "scenarios" / (scene_id + ext)
+    if path is None:
+        return dict(entry, status="error", message="no scene file")
+    scene = loader.load(path)
+    if scene.elements:
+        return dict(entry, status="unsupported", message="the benchmark does not build " + ", ".join(scene.elements))
+    built = build(scene)
+    space = built.space
+    space.iterations = PYMUNK_ITERATIONS
+    h = scene.world.timestep
+    names = [b.name for b in scene.bodies]
+    initial = poses(built, names)
+    preroll = args.preroll if args.preroll >= 0 else int(math.ceil(scene.duration / h - 1e-9))
+    t0 = time.perf_counter()
+    for _ in range(preroll):
+        space.step(h)
+    t1 = time.perf_counter()
+    ticks = preroll
+    check = judge(scene, ticks, initial, poses(built, names))
+
+    def rounds(n):
+        results = []
+        for _ in range(n):
+            w0, c0, k = time.perf_counter(), time.thread_time(), 0
+            while time.perf_counter() - w0 < args.seconds:
+                space.step(h)
+                k += 1
+            results.append(((time.perf_counter() - w0) / k, (time.thread_time() - c0) / k, k))
+        return results
+
+    rounds(args.warmups)
+    measured = rounds(args.iterations)
+    ticks += sum(m[2] for m in measured) + 0
+    wall = [m[0] * 1e3 for m in measured]
+    cpu = sum(m[1] * m[2] for m in measured) / sum(m[2] for m in measured) * 1e3
+    dynamic = sum(1 for b in scene.bodies if not b.state.static)
+    mean = sum(wall) / len(wall)
+    sd = math.sqrt(sum((w - mean) ** 2 for w in wall) / max(1, len(wall) - 1))
+    return dict(entry, bodies=len(scene.bodies), dynamicBodies=dynamic, msPerTick=mean,
+                msPerTickError=sd, msPerTickMedian=sorted(wall)[len(wall) // 2], cpuMsPerTick=cpu,
+                usPerBody=cpu * 1e3 / max(1, dynamic), allocBytesPerTick=None, threadBytesPerTick=None,
+                prerollMsPerTick=(t1 - t0) * 1e3 / preroll if preroll else None,
+                settings=f"px units via the oracle's builder (oracle-py/); timestep {h:g} s; "
+                         f"{PYMUNK_ITERATIONS} iterations (Chipmunk's default); sleeping off; pymunk {built.settings.get('pymunk', '')}".strip(),
+                check=check, afterRun=judge(scene, ticks, initial, poses(built, names)))
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--root", required=True, type=Path)
+    ap.add_argument("--out", required=True, type=Path)
+    ap.add_argument("--preroll", type=int, default=-1)
+    ap.add_argument("--warmups", type=int, default=3)
+    ap.add_argument("--iterations", type=int, default=5)
+    ap.add_argument("--seconds", type=float, default=1.0)
+    ap.add_argument("scenes", nargs="+")
+    args = ap.parse_args(argv)
+    sys.path.insert(0, str(args.root / "oracle-py" / "src"))
+    from emini_oracle import scene as scene_mod
+    from emini_oracle.build import build
+    loader = scene_mod.Loader(args.root / "scenarios" / "scenario.schema.json")
+    out = []
+    for s in args.scenes:
+        try:
+            m = measure(loader, build, args.root, s, args)
+        except Exception as e:  # reported in the report, never hidden
+            m = {"scene": s, "engine": "pymunk", "status": "error", "message": f"{type(e).__name__}: {e}"}
+        print(f"{s:28s} pymunk     {m.get('cpuMsPerTick', float('nan')):9.3f} ms/tick cpu  "
+              f"{m.get('msPerTick', float('nan')):9.3f} wall  {m.get('check', {}).get('verdict', m['status'])}", flush=True)
+        out.append(m)
+    args.out.write_text(json.dumps(out, indent=1))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,96 @@
+package org.emini.bench.check;
+
+import org.emini.harness.scenario.BodySpec;
+import org.emini.harness.scenario.Scenario;
+
+/**
+ * Did the scene stay what it should be? Judged from the bodies' poses in scene units (px), the same
+ * way for every engine.
+ *
+ * <p>Stacking scenes (category {@code stacking}): every dynamic body should stay where it was put.
+ * Sideways motion and turning are what a toppling stack shows; vertical motion is mostly the stack
+ * settling on its contacts (soft contacts sag, Box2D's polygon skin lifts each row by about 1.5 cm).
+ * With b the size of the first dynamic body: {@code stable} when every body stayed within b/4
+ * sideways (5 px for a 20 px box, the scenario library's "still standing" margin), turned less than
+ * 0.1 rad and moved less than b vertically; {@code collapsed} when a body moved more than b sideways
+ * or 2b vertically, or turned more than 0.5 rad; {@code drifted} in between. Other scenes (rain into a container):
+ * {@code stable} when no body left the container (outside the static bodies' horizontal extent or
+ * below the top of the lowest static body) and every pose is finite, else {@code escaped}.
+ *
+ * @param ticks ticks run before the check
+ * @param verdict stable, drifted, collapsed, escaped or non-finite
+ * @param maxDisplacementPx largest distance of a dynamic body from its initial position (px)
+ * @param maxDxPx largest sideways displacement of a dynamic body (px)
+ * @param maxDyPx largest vertical displacement of a dynamic body (px)
+ * @param bodySize b, the size of the first dynamic body (px)
+ * @param maxAngle largest |angle change| of a dynamic body (rad)
+ * @param maxSpeed largest speed of a dynamic body at the check (px/s)
+ * @param escaped dynamic bodies outside the container
+ * @param nonFinite dynamic bodies with a non-finite pose
+ */
+public record Stability(long ticks, String verdict, double maxDisplacementPx, double maxDxPx, double maxDyPx, double bodySize,
+                        double maxAngle, double maxSpeed, int escaped, int nonFinite) {
+
+    /**
+     * Judges poses.
+     *
+     * @param s the scene
+     * @param ticks ticks run
+     * @param initial poses at tick 0 (x, y, angle per body)
+     * @param now poses now
+     * @param speeds speeds now (px/s)
+     */
+    public static Stability judge(Scenario s, long ticks, double[] initial, double[] now, double[] speeds) {
+        double minX = Double.MAX_VALUE, maxX = -Double.MAX_VALUE, floorTop = -Double.MAX_VALUE;
+        double size = 0;
+        for (int i = 0; i < s.bodies().size(); i++) {
+            BodySpec b = s.bodies().get(i);
+            double[] wh = b.shape().size();
+            double w = wh == null ? 0 : wh[0];
+            double h = wh == null ? 0 : wh[1];
+            if (b.state().isStatic()) {
+                minX = Math.min(minX, b.x() - w / 2);
+                maxX = Math.max(maxX, b.x() + w / 2);
+                floorTop = Math.max(floorTop, b.y() - h / 2);
+            } else if (size == 0) {
+                size = Math.max(w, h);
+            }
+        }
+        boolean stacking = "stacking".equals(s.category());
+        double maxD = 0, maxDx = 0, maxDy = 0, maxA = 0, maxV = 0;
+        int escaped = 0, nonFinite = 0;
+        for (int i = 0; i < s.bodies().size(); i++) {
+            if (s.bodies().get(i).state().isStatic()) {
+                continue;
+            }
+            double x = now[3 * i], y = now[3 * i + 1], a = now[3 * i + 2];
+            if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(a)) {
+                nonFinite++;
+                continue;
+            }
+            maxD = Math.max(maxD, Math.hypot(x - initial[3 * i], y - initial[3 * i + 1]));
+            maxDx = Math.max(maxDx, Math.abs(x - initial[3 * i]));
+            maxDy = Math.max(maxDy, Math.abs(y - initial[3 * i + 1]));
+            maxA = Math.max(maxA, Math.abs(a - initial[3 * i + 2]));
+            maxV = Math.max(maxV, speeds[i]);
+            if (minX <= maxX && (x < minX || x > maxX || y > floorTop)) {
+                escaped++;
+            }
+        }
+        String verdict;
+        if (nonFinite > 0) {
+            verdict = "non-finite";
+        } else if (stacking) {
+            if (maxDx <= size / 4 && maxA < 0.1 && maxDy <= size) {
+                verdict = "stable";
+            } else if (maxDx > size || maxDy > 2 * size || maxA > 0.5) {
+                verdict = "collapsed";
+            } else {
+                verdict = "drifted";
+            }
+        } else {
+            verdict = escaped == 0 ? "stable" : "escaped";
+        }
+        return new Stability(ticks, verdict, maxD, maxDx, maxDy, size, maxA, maxV, escaped, nonFinite);
+    }
+}

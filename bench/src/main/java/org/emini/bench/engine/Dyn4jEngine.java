@@ -1,0 +1,111 @@
+package org.emini.bench.engine;
+
+import org.dyn4j.dynamics.Body;
+import org.dyn4j.dynamics.Settings;
+import org.dyn4j.geometry.Convex;
+import org.dyn4j.geometry.Geometry;
+import org.dyn4j.geometry.MassType;
+import org.dyn4j.geometry.Vector2;
+import org.dyn4j.world.World;
+import org.emini.harness.scenario.Scenario;
+
+/**
+ * dyn4j 5.0.2 at its default solver settings (10 velocity and 10 position iterations, continuous
+ * collision for bullets against static bodies, warm starting), with at-rest detection (sleeping) off
+ * so a settled scene keeps being simulated, as in every engine here. Metres via {@link PeerScene}.
+ */
+final class Dyn4jEngine implements BenchEngine {
+    private World<Body> world;
+    private Body[] bodies;
+    private PeerScene scene;
+
+    @Override
+    public String id() {
+        return "dyn4j";
+    }
+
+    @Override
+    public void build(Scenario scenario) throws UnsupportedSceneException {
+        scene = PeerScene.of(scenario, "dyn4j", Integer.MAX_VALUE);
+        world = new World<>();
+        Settings s = world.getSettings();
+        s.setStepFrequency(scene.timestep);
+        s.setAtRestDetectionEnabled(false);
+        world.setGravity(scene.gravityX, scene.gravityY);
+        bodies = new Body[scene.bodies.size()];
+        int i = 0;
+        for (PeerScene.PeerBody pb : scene.bodies) {
+            Body b = new Body();
+            PeerScene.PeerShape sh = pb.shape;
+            Convex c;
+            if (sh.circle) {
+                c = Geometry.createCircle(sh.radius);
+            } else {
+                Vector2[] v = new Vector2[sh.vertexCount()];
+                for (int k = 0; k < v.length; k++) {
+                    v[k] = new Vector2(sh.xy[2 * k], sh.xy[2 * k + 1]);
+                }
+                c = Geometry.createPolygon(v);
+            }
+            b.addFixture(c, sh.density, sh.friction, sh.restitution);
+            if (!pb.dynamic) {
+                b.setMass(MassType.INFINITE);
+            } else {
+                b.setMass(pb.rotatable ? MassType.NORMAL : MassType.FIXED_ANGULAR_VELOCITY);
+            }
+            b.rotate(pb.angle);
+            b.translate(pb.x, pb.y);
+            b.setLinearVelocity(pb.vx, pb.vy);
+            b.setAngularVelocity(pb.omega);
+            if (!pb.gravity) {
+                b.setGravityScale(0);
+            }
+            b.setAtRestDetectionEnabled(false);
+            world.addBody(b);
+            bodies[i++] = b;
+        }
+    }
+
+    @Override
+    public void tick() {
+        world.step(1);
+    }
+
+    @Override
+    public int bodyCount() {
+        return bodies.length;
+    }
+
+    @Override
+    public void poses(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            // The body's origin is its centroid here (checked by PeerScene), as in the scene.
+            out[3 * i] = bodies[i].getTransform().getTranslationX() * PeerScene.PX_PER_M;
+            out[3 * i + 1] = -bodies[i].getTransform().getTranslationY() * PeerScene.PX_PER_M;
+            out[3 * i + 2] = -bodies[i].getTransform().getRotationAngle();
+        }
+    }
+
+    @Override
+    public void speeds(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            Vector2 v = bodies[i].getLinearVelocity();
+            out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+        }
+    }
+
+    @Override
+    public String settings() {
+        Settings s = world.getSettings();
+        return "metres (20 px = 1 m); timestep " + s.getStepFrequency() + " s; "
+            + s.getVelocityConstraintSolverIterations() + " velocity + " + s.getPositionConstraintSolverIterations()
+            + " position iterations (defaults); continuous detection " + s.getContinuousDetectionMode()
+            + "; at-rest detection off";
+    }
+
+    @Override
+    public void close() {
+        world = null;
+        bodies = null;
+    }
+}

@@ -1,0 +1,72 @@
+package org.emini.bench.engine;
+
+import org.emini.dynamics.Body;
+import org.emini.dynamics.World;
+import org.emini.harness.build.BuiltWorld;
+import org.emini.harness.build.UnsupportedElementException;
+import org.emini.harness.build.WorldBuilder;
+import org.emini.harness.scenario.Scenario;
+
+/**
+ * Emini, built by the harness's own {@link WorldBuilder}: the very world {@code ./emini run} judges.
+ * Scene units are Emini's units (px), so nothing is scaled.
+ */
+final class EminiEngine implements BenchEngine {
+    private World world;
+    private Body[] bodies;
+
+    @Override
+    public String id() {
+        return "emini";
+    }
+
+    @Override
+    public void build(Scenario scenario) throws UnsupportedSceneException {
+        BuiltWorld built;
+        try {
+            built = WorldBuilder.build(scenario);
+        } catch (UnsupportedElementException e) {
+            throw new UnsupportedSceneException(e.getMessage());
+        }
+        world = built.world();
+        bodies = built.bodies().values().toArray(new Body[0]);
+    }
+
+    @Override
+    public void tick() {
+        world.tick();
+    }
+
+    @Override
+    public int bodyCount() {
+        return bodies.length;
+    }
+
+    @Override
+    public void poses(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[3 * i] = bodies[i].getX();
+            out[3 * i + 1] = bodies[i].getY();
+            out[3 * i + 2] = bodies[i].getAngle();
+        }
+    }
+
+    @Override
+    public void speeds(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = Math.hypot(bodies[i].getVelocityX(), bodies[i].getVelocityY());
+        }
+    }
+
+    @Override
+    public String settings() {
+        return "px units; timestep " + world.getTimestep() + " s; " + world.getConstraintIterations()
+            + " substeps (each one soft solve + one relax pass); default SolverSettings; no sleeping (Emini has none)";
+    }
+
+    @Override
+    public void close() {
+        world = null;
+        bodies = null;
+    }
+}

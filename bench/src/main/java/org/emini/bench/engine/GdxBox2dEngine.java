@@ -1,0 +1,119 @@
+package org.emini.bench.engine;
+
+import com.badlogic.gdx.math.Vector2;
+import com.badlogic.gdx.physics.box2d.Body;
+import com.badlogic.gdx.physics.box2d.BodyDef;
+import com.badlogic.gdx.physics.box2d.Box2D;
+import com.badlogic.gdx.physics.box2d.CircleShape;
+import com.badlogic.gdx.physics.box2d.FixtureDef;
+import com.badlogic.gdx.physics.box2d.PolygonShape;
+import com.badlogic.gdx.physics.box2d.Shape;
+import com.badlogic.gdx.physics.box2d.World;
+import org.emini.harness.scenario.Scenario;
+
+/**
+ * libGDX's Box2D extension (gdx-box2d 1.12.1): native Box2D 2.3.1 called through JNI, loaded from the
+ * gdx-box2d-platform desktop natives with {@link Box2D#init()}. Same settings as {@link JBox2dEngine}:
+ * 8 velocity and 3 position iterations, continuous collision at its default, sleeping off. Metres via
+ * {@link PeerScene}. Memory the native side allocates is not seen by JMH's GC profiler.
+ */
+final class GdxBox2dEngine implements BenchEngine {
+    private static final int MAX_POLYGON_VERTICES = 8;
+    private World world;
+    private Body[] bodies;
+    private float dt;
+
+    @Override
+    public String id() {
+        return "gdx-box2d";
+    }
+
+    @Override
+    public void build(Scenario scenario) throws UnsupportedSceneException {
+        PeerScene scene = PeerScene.of(scenario, "gdx-box2d", MAX_POLYGON_VERTICES);
+        Box2D.init();
+        dt = (float) scene.timestep;
+        world = new World(new Vector2((float) scene.gravityX, (float) scene.gravityY), false);
+        bodies = new Body[scene.bodies.size()];
+        int i = 0;
+        for (PeerScene.PeerBody pb : scene.bodies) {
+            BodyDef def = new BodyDef();
+            def.type = pb.dynamic ? BodyDef.BodyType.DynamicBody : BodyDef.BodyType.StaticBody;
+            def.position.set((float) pb.x, (float) pb.y);
+            def.angle = (float) pb.angle;
+            def.linearVelocity.set((float) pb.vx, (float) pb.vy);
+            def.angularVelocity = (float) pb.omega;
+            def.fixedRotation = !pb.rotatable;
+            def.gravityScale = pb.gravity ? 1f : 0f;
+            def.allowSleep = false;
+            Body b = world.createBody(def);
+            Shape shape = shape(pb.shape);
+            FixtureDef fd = new FixtureDef();
+            fd.shape = shape;
+            fd.density = (float) pb.shape.density;
+            fd.friction = (float) pb.shape.friction;
+            fd.restitution = (float) pb.shape.restitution;
+            b.createFixture(fd);
+            shape.dispose();
+            bodies[i++] = b;
+        }
+    }
+
+    private static Shape shape(PeerScene.PeerShape sh) {
+        if (sh.circle) {
+            CircleShape c = new CircleShape();
+            c.setRadius((float) sh.radius);
+            return c;
+        }
+        float[] v = new float[sh.xy.length];
+        for (int k = 0; k < v.length; k++) {
+            v[k] = (float) sh.xy[k];
+        }
+        PolygonShape p = new PolygonShape();
+        p.set(v);
+        return p;
+    }
+
+    @Override
+    public void tick() {
+        world.step(dt, JBox2dEngine.VELOCITY_ITERATIONS, JBox2dEngine.POSITION_ITERATIONS);
+    }
+
+    @Override
+    public int bodyCount() {
+        return bodies.length;
+    }
+
+    @Override
+    public void poses(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            Vector2 p = bodies[i].getPosition();
+            out[3 * i] = p.x * PeerScene.PX_PER_M;
+            out[3 * i + 1] = -p.y * PeerScene.PX_PER_M;
+            out[3 * i + 2] = -bodies[i].getAngle();
+        }
+    }
+
+    @Override
+    public void speeds(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            Vector2 v = bodies[i].getLinearVelocity();
+            out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+        }
+    }
+
+    @Override
+    public String settings() {
+        return "metres (20 px = 1 m); timestep " + dt + " s; " + JBox2dEngine.VELOCITY_ITERATIONS + " velocity + "
+            + JBox2dEngine.POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off; native Box2D 2.3.1 via JNI";
+    }
+
+    @Override
+    public void close() {
+        if (world != null) {
+            world.dispose();
+        }
+        world = null;
+        bodies = null;
+    }
+}

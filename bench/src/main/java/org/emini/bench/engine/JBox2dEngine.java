@@ -1,0 +1,118 @@
+package org.emini.bench.engine;
+
+import org.emini.harness.scenario.Scenario;
+import org.jbox2d.collision.shapes.CircleShape;
+import org.jbox2d.collision.shapes.PolygonShape;
+import org.jbox2d.collision.shapes.Shape;
+import org.jbox2d.common.Settings;
+import org.jbox2d.common.Vec2;
+import org.jbox2d.dynamics.Body;
+import org.jbox2d.dynamics.BodyDef;
+import org.jbox2d.dynamics.BodyType;
+import org.jbox2d.dynamics.FixtureDef;
+import org.jbox2d.dynamics.World;
+
+/**
+ * JBox2D 2.2.1.1 (a Java port of Box2D 2.2) with Box2D's recommended 8 velocity and 3 position
+ * iterations, continuous collision at its default (dynamic against static), warm starting on, and
+ * sleeping off so a settled scene keeps being simulated. Metres via {@link PeerScene}.
+ */
+final class JBox2dEngine implements BenchEngine {
+    /** Box2D's recommended velocity iterations. */
+    static final int VELOCITY_ITERATIONS = 8;
+    /** Box2D's recommended position iterations. */
+    static final int POSITION_ITERATIONS = 3;
+
+    private World world;
+    private Body[] bodies;
+    private float dt;
+
+    @Override
+    public String id() {
+        return "jbox2d";
+    }
+
+    @Override
+    public void build(Scenario scenario) throws UnsupportedSceneException {
+        PeerScene scene = PeerScene.of(scenario, "jbox2d", Settings.maxPolygonVertices);
+        dt = (float) scene.timestep;
+        world = new World(new Vec2((float) scene.gravityX, (float) scene.gravityY));
+        world.setAllowSleep(false);
+        bodies = new Body[scene.bodies.size()];
+        int i = 0;
+        for (PeerScene.PeerBody pb : scene.bodies) {
+            BodyDef def = new BodyDef();
+            def.type = pb.dynamic ? BodyType.DYNAMIC : BodyType.STATIC;
+            def.position.set((float) pb.x, (float) pb.y);
+            def.angle = (float) pb.angle;
+            def.linearVelocity.set((float) pb.vx, (float) pb.vy);
+            def.angularVelocity = (float) pb.omega;
+            def.fixedRotation = !pb.rotatable;
+            def.gravityScale = pb.gravity ? 1f : 0f;
+            def.allowSleep = false;
+            Body b = world.createBody(def);
+            FixtureDef fd = new FixtureDef();
+            fd.shape = shape(pb.shape);
+            fd.density = (float) pb.shape.density;
+            fd.friction = (float) pb.shape.friction;
+            fd.restitution = (float) pb.shape.restitution;
+            b.createFixture(fd);
+            bodies[i++] = b;
+        }
+    }
+
+    private static Shape shape(PeerScene.PeerShape sh) {
+        if (sh.circle) {
+            CircleShape c = new CircleShape();
+            c.m_radius = (float) sh.radius;
+            return c;
+        }
+        Vec2[] v = new Vec2[sh.vertexCount()];
+        for (int k = 0; k < v.length; k++) {
+            v[k] = new Vec2((float) sh.xy[2 * k], (float) sh.xy[2 * k + 1]);
+        }
+        PolygonShape p = new PolygonShape();
+        p.set(v, v.length);
+        return p;
+    }
+
+    @Override
+    public void tick() {
+        world.step(dt, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    }
+
+    @Override
+    public int bodyCount() {
+        return bodies.length;
+    }
+
+    @Override
+    public void poses(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            Vec2 p = bodies[i].getPosition();
+            out[3 * i] = p.x * PeerScene.PX_PER_M;
+            out[3 * i + 1] = -p.y * PeerScene.PX_PER_M;
+            out[3 * i + 2] = -bodies[i].getAngle();
+        }
+    }
+
+    @Override
+    public void speeds(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            Vec2 v = bodies[i].getLinearVelocity();
+            out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+        }
+    }
+
+    @Override
+    public String settings() {
+        return "metres (20 px = 1 m); timestep " + dt + " s; " + VELOCITY_ITERATIONS + " velocity + "
+            + POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off";
+    }
+
+    @Override
+    public void close() {
+        world = null;
+        bodies = null;
+    }
+}

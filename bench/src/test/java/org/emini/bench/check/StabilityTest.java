@@ -1,0 +1,64 @@
+package org.emini.bench.check;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import org.emini.bench.scene.BenchScenes;
+import org.emini.harness.scenario.Scenario;
+import org.junit.jupiter.api.Test;
+
+/** The scene check's verdicts on hand-made poses. */
+class StabilityTest {
+    private static final BenchScenes SCENES = BenchScenes.open();
+
+    private static double[] poses(Scenario s) {
+        double[] p = new double[3 * s.bodies().size()];
+        for (int i = 0; i < s.bodies().size(); i++) {
+            p[3 * i] = s.bodies().get(i).x();
+            p[3 * i + 1] = s.bodies().get(i).y();
+            p[3 * i + 2] = s.bodies().get(i).state().angle();
+        }
+        return p;
+    }
+
+    private static Stability judge(Scenario s, double[] now) {
+        return Stability.judge(s, 1, poses(s), now, new double[s.bodies().size()]);
+    }
+
+    @Test
+    void aPyramidThatSettlesIsStableOneThatSlidesDriftsOneThatFallsCollapsed() {
+        Scenario s = SCENES.load("bench/pyramid-20");
+        double[] now = poses(s);
+        assertEquals("stable", judge(s, now).verdict());
+        // The whole pyramid 15 px lower (sag, or Box2D's skin the other way) is still standing.
+        for (int i = 1; i < s.bodies().size(); i++) {
+            now[3 * i + 1] += 15;
+        }
+        Stability sag = judge(s, now);
+        assertEquals("stable", sag.verdict());
+        assertEquals(15, sag.maxDyPx(), 1e-9);
+        now[3 * 100] += 8;
+        assertEquals("drifted", judge(s, now).verdict());
+        now[3 * 100] += 20;
+        assertEquals("collapsed", judge(s, now).verdict());
+        now = poses(s);
+        now[3 * 50 + 2] = 0.7;
+        assertEquals("collapsed", judge(s, now).verdict());
+    }
+
+    @Test
+    void rainThatLeavesTheContainerEscapedAndNonFiniteIsNamed() {
+        Scenario s = SCENES.load("bench/rain-100");
+        double[] now = poses(s);
+        // Everyone lands on the floor (its top is y = 0).
+        for (int i = 3; i < s.bodies().size(); i++) {
+            now[3 * i + 1] = -10;
+        }
+        assertEquals("stable", judge(s, now).verdict());
+        now[3 * 10 + 1] = 30;
+        Stability fell = judge(s, now);
+        assertEquals("escaped", fell.verdict());
+        assertEquals(1, fell.escaped());
+        now[3 * 11] = Double.NaN;
+        assertEquals("non-finite", judge(s, now).verdict());
+    }
+}
