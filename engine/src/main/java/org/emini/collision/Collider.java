@@ -232,8 +232,9 @@ public final class Collider {
 
     /**
      * Collides a landscape segment A with a circle or polygon B: one or two points whose normal
-     * points from the segment to B. A faced segment reports nothing for a shape whose centroid is on
-     * its open side; see {@link Segment} for the facing and the smoothing of joints.
+     * points from the segment to B. Which side B is on is decided by (bx, by), its body's position
+     * (pass the body's pose for a part of a multi-shape): a faced segment reports nothing for a
+     * body on its open side. See {@link Segment} for the facing and the smoothing of joints.
      *
      * <p>Feature ids: a circle's point has id 0; a polygon's follow the polygon–polygon scheme, with
      * the segment as A and its ends numbered 0 and 1 (which end is 0 depends on the side B is on).

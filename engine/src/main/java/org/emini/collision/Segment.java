@@ -8,8 +8,8 @@ package org.emini.collision;
  * <p>Facing, as in the original engine (y points down the screen): {@link #FACE_LEFT} stops bodies
  * on the left-hand side of the direction start → end, where (end − start) × (p − start) &lt; 0 with
  * a × b = a.x·b.y − a.y·b.x; {@link #FACE_RIGHT} stops bodies on the other side; {@link #FACE_NONE}
- * stops bodies on whichever side their centre is. A faced segment lets a body whose centre is on
- * the open side pass.
+ * stops bodies on whichever side their position is. A faced segment lets a body whose position is
+ * on the open side pass; a body exactly on the line is stopped.
  *
  * <p>Neighbours make a chain of segments smooth: where the chain continues flat or bends towards
  * the body, the joint is not a corner, so no contact normal may point sideways out of it (a box
@@ -46,12 +46,12 @@ public final class Segment {
     /** World y of the far end of the segment joined at the end point (px). */
     public float nextY;
     /**
-     * The side to collide from: 0 to decide by the shape's centroid (and, for a faced segment, to
-     * ignore a shape on the open side), or the side a contact with the same shape was found on
-     * last time ({@link Collider#getSegmentSide()}: +1 the left of start → end on a y-down screen,
-     * where a facing-2 segment blocks; −1 the other side), to keep it whatever the centroid, so a
-     * shape pushed deeper than its centroid into a thin landscape is pushed back out rather than
-     * through. A side that a faced segment does not block is ignored.
+     * The side to collide from: 0 to decide by the body's position (and, for a faced segment, to
+     * ignore a body on the open side), or the side a contact with the same shape was found on last
+     * time ({@link Collider#getSegmentSide()}: +1 where (end − start) × (p − start) &gt; 0, the side
+     * facing 2 blocks; −1 the other side, which facing 1 blocks), kept whatever the body's position,
+     * so a body pushed past the line of a thin landscape is pushed back out rather than through. A
+     * side that a faced segment does not block is ignored.
      */
     public int side;
 

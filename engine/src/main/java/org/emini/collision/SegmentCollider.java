@@ -9,12 +9,13 @@ import org.emini.shape.Shape;
  * Segment–circle and segment–polygon narrowphase for the landscape: one-sided where the segment is
  * faced, and smooth across the joints of a chain of segments.
  *
- * <p>The side a shape collides from is decided by its centroid: a faced segment ignores a shape
- * whose centroid is on its open side, so a body coming from there passes through and is never
- * pushed through to the blocking side; an unfaced segment collides from whichever side the
- * centroid is on. Once a shape touches, the caller may keep its side ({@link Segment#side}), so a
- * shape pushed deeper than its centroid is pushed back rather than through. A shape whose
- * centroid lies beyond an end where the chain continues flat or bends towards it, and behind the
+ * <p>The side a shape collides from is decided by the position of its body (the shape's local
+ * origin, as in the original engine; a multi-shape body passes or is stopped as a whole): a faced
+ * segment ignores a body on its open side, so a body coming from there passes through and is never
+ * pushed through to the blocking side, while a body exactly on the line is blocked; an unfaced
+ * segment collides from whichever side the body is on. Once a shape touches, the caller may keep
+ * its side ({@link Segment#side}), so a body pushed past the line is pushed back rather than
+ * through. A shape whose centroid lies beyond an end where the chain continues flat or bends towards it, and behind the
  * neighbour's face, is on the neighbour's other side and is ignored. The contact normal is then confined to the cone of directions the segment owns:
  * its face normal, and around an end either the quarter turn to the outward tangent (a free end),
  * the turn to the neighbour's face normal (a convex joint), or nothing (a flat or concave joint,
@@ -54,10 +55,11 @@ final class SegmentCollider {
     }
 
     /**
-     * Sets up the segment against a shape whose centroid is at (cx, cy); returns false when the
-     * shape cannot collide with it (a point segment, or the centroid on the open side).
+     * Sets up the segment against a shape placed at (ox, oy) (the body's position, which decides
+     * the side) whose centroid is at (cx, cy); returns false when the shape cannot collide with it
+     * (a point segment, the body on the open side, or the shape on a neighbour's other side).
      */
-    private boolean begin(Segment seg, float cx, float cy) {
+    private boolean begin(Segment seg, float ox, float oy, float cx, float cy) {
         int kept = seg.side;
         foundSide = 0;
         float dx = seg.x2 - seg.x1;
@@ -71,7 +73,8 @@ final class SegmentCollider {
         ux = dx / length;
         uy = dy / length;
         // The left normal (−uy, ux): a body at p is on the face-1 side when (p − start)·left < 0.
-        float side = (cx - seg.x1) * -uy + (cy - seg.y1) * ux;
+        // As in the original, the body's position decides, and a body on the line is blocked.
+        float side = (ox - seg.x1) * -uy + (oy - seg.y1) * ux;
         int blocking = seg.face == Segment.FACE_LEFT ? -1 : (seg.face == Segment.FACE_RIGHT ? 1 : 0);
         int sign;
         if (kept != 0 && (blocking == 0 || kept == blocking)) {
@@ -164,7 +167,7 @@ final class SegmentCollider {
         out.pointCount = 0;
         float px = bx + bc * b.getCenterX() - bs * b.getCenterY();
         float py = by + bs * b.getCenterX() + bc * b.getCenterY();
-        if (!begin(seg, px, py)) {
+        if (!begin(seg, bx, by, px, py)) {
             return;
         }
         float radius = b.getRadius();
@@ -209,7 +212,7 @@ final class SegmentCollider {
         out.pointCount = 0;
         float lx = b.getCentroidX();
         float ly = b.getCentroidY();
-        if (!begin(seg, bx + bc * lx - bs * ly, by + bs * lx + bc * ly)) {
+        if (!begin(seg, bx, by, bx + bc * lx - bs * ly, by + bs * lx + bc * ly)) {
             return;
         }
         // The polygon relative to the segment's start, in world orientation.

@@ -155,17 +155,16 @@ final class ContinuousSolver implements QueryCallback {
             if (ex * ex + ey * ey < 1e-12f) {
                 return true;
             }
-            // (end − start) × (centre − start): negative on the left side, which face 1 blocks.
-            float lx = shape.getCentroidX();
-            float ly = shape.getCentroidY();
-            float before = ex * (y0 + moving.s * lx + moving.c * ly - segment.y1)
-                - ey * (x0 + moving.c * lx - moving.s * ly - segment.x1);
-            if (segment.face != Segment.FACE_NONE && (segment.face == Segment.FACE_LEFT) != (before < 0f)) {
+            // (end − start) × (position − start): negative on the left side, which face 1 blocks;
+            // as in the narrowphase, a body exactly on the line is blocked.
+            float before = ex * (y0 - segment.y1) - ey * (x0 - segment.x1);
+            if (segment.face != Segment.FACE_NONE && before != 0f
+                    && (segment.face == Segment.FACE_LEFT) != (before < 0f)) {
                 return true;
             }
             float c1 = state[moving.solverIndex * SolverBodies.STRIDE + C];
             float s1 = state[moving.solverIndex * SolverBodies.STRIDE + S];
-            float after = ex * (y1 + s1 * lx + c1 * ly - segment.y1) - ey * (x1 + c1 * lx - s1 * ly - segment.x1);
+            float after = ex * (y1 - segment.y1) - ey * (x1 - segment.x1);
             boolean crossed = (before < 0f) != (after < 0f);
             if (!crossed && TimeOfImpact.segmentSeparation(shape, x1, y1, c1, s1, segment)
                     > -Math.max(TimeOfImpact.coreRadius(shape), target)) {
