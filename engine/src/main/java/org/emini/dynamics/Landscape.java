@@ -98,6 +98,7 @@ public final class Landscape {
     private int touchedCount;
     private final JoinFinder joins = new JoinFinder();
     private final LiveFilter live = new LiveFilter();
+    private final SlotsToIndices indices = new SlotsToIndices();
     // Build input, by slot.
     private float[] boxMinX = new float[0];
     private float[] boxMinY = new float[0];
@@ -321,6 +322,36 @@ public final class Landscape {
      */
     public int getFace(int index) {
         return face[order[checkIndex("Landscape.getFace", index)]];
+    }
+
+    /**
+     * Reports the index of every segment whose bounding box overlaps a box (touching counts), in
+     * a deterministic order, until the callback returns false. Uses the landscape's index, so it
+     * costs in proportion to the segments near the box, and allocates nothing. The particles use
+     * it to find the segments near them.
+     *
+     * @param minX the left of the box (px)
+     * @param minY the top of the box (px)
+     * @param maxX the right of the box (px)
+     * @param maxY the bottom of the box (px)
+     * @param callback receives the segment indices; it must not change the landscape
+     */
+    public void querySegments(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        Check.notNull("Landscape.querySegments", "callback", callback);
+        prepare();
+        indices.forward = callback;
+        query(minX, minY, maxX, maxY, indices);
+        indices.forward = null;
+    }
+
+    /** Turns the slots {@link #query} reports into segment indices, for {@link #querySegments}. */
+    private final class SlotsToIndices implements QueryCallback {
+        QueryCallback forward;
+
+        @Override
+        public boolean reportProxy(int slot) {
+            return forward.reportProxy(slotIndex[slot]);
+        }
     }
 
     private int checkIndex(String where, int index) {

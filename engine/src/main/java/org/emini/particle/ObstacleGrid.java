@@ -1,7 +1,9 @@
 package org.emini.particle;
 
 import java.util.Arrays;
+import org.emini.collision.QueryCallback;
 import org.emini.dynamics.Body;
+import org.emini.dynamics.Landscape;
 import org.emini.dynamics.World;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
@@ -11,18 +13,21 @@ import org.emini.shape.Shape;
  * tick.
  *
  * <p>Obstacles are numbered bodies first ({@code 0 .. bodyCount − 1}), then segments. Only
- * interacting bodies whose motion over the tick overlaps the particles' region are taken.
- * Each keeps its pose at the end of the tick (the solver's result) and its pose at the start,
- * extrapolated back with its final velocities, so a particle's motion can be tested relative to a
- * moving body. The grid is built from exact current boxes rather than queried from the world's
- * broadphase, whose fat boxes may lag behind a body that the solver moved beyond its margin; a
- * per-tick counting sort costs O(bodies) and allocates nothing once its arrays have grown.
+ * interacting bodies (circles, polygons, multi-shapes) whose motion over the tick overlaps the
+ * particles' region are taken, whatever their layers (as in the original). Each keeps its pose at
+ * the end of the tick (the solver's result) and its pose at the start, extrapolated back with its
+ * final velocities, so a particle's motion can be tested relative to a moving body; a body frozen
+ * outside the simulation area stands still. The grid is built from exact current boxes rather than
+ * queried from the world's broadphase, whose fat boxes may lag behind a body that the solver moved
+ * beyond its margin (and whose queries measured 2 to 20 times slower here); a per-tick counting
+ * sort costs O(bodies) and allocates nothing once its arrays have grown. The landscape's segments
+ * near the region come from its own index.
  *
  * <p>The cell size is the mean body size, but at least 1/128 of the region, so the grid has at most
  * 128 × 128 cells. Bodies that would cover more than {@link #MAX_CELLS_PER_BODY} cells (walls, the
  * ground) go to a short list that every query scans.
  */
-final class ObstacleGrid {
+final class ObstacleGrid implements QueryCallback {
     private static final int MAX_CELLS_PER_SIDE = 128;
     /** Obstacles covering more cells than this are scanned by every query instead. */
     static final int MAX_CELLS_PER_BODY = 64;
@@ -82,6 +87,8 @@ final class ObstacleGrid {
 
     private final float[] box = new float[4];
     private float sizeSum;
+    /** The landscape being queried in {@link #build}. */
+    private Landscape landscape;
     // Per world body: a cheap box around its motion this tick (min x = +inf for bodies left out).
     private float[] reachMinX = new float[16];
     private float[] reachMinY = new float[16];
@@ -95,7 +102,7 @@ final class ObstacleGrid {
      * out of the region by up to half the body's narrower side; the region is grown by the largest
      * such distance among the bodies it touches, so that the bodies where it may land are known too.
      */
-    void build(World world, SegmentSource segments, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
+    void build(World world, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
         count = 0;
         largeCount = 0;
         int n = world.getBodyCount();
@@ -112,12 +119,12 @@ final class ObstacleGrid {
             Body b = world.getBody(i);
             Shape shape = b.getShape();
             int type = shape.getType();
-            if (!b.isInteracting() || type != Shape.TYPE_CIRCLE && type != Shape.TYPE_POLYGON) {
+            if (!b.isInteracting() || type != Shape.TYPE_CIRCLE && type != Shape.TYPE_POLYGON && type != Shape.TYPE_MULTI) {
                 reachMinX[i] = Float.POSITIVE_INFINITY;
                 continue;
             }
             shape.computeAabb(b.getX(), b.getY(), b.getCos(), b.getSin(), box);
-            float reach = (Math.abs(b.getVelocityX()) + Math.abs(b.getVelocityY())
+            float reach = frozen(world, b) ? 0f : (Math.abs(b.getVelocityX()) + Math.abs(b.getVelocityY())
                 + Math.abs(b.getAngularVelocity()) * shape.getBoundingRadius()) * dt;
             float lowX = box[0] - reach;
             float lowY = box[1] - reach;
@@ -151,10 +158,11 @@ final class ObstacleGrid {
             float by = b.getY();
             float bc = b.getCos();
             float bs = b.getSin();
-            float bvx = b.getVelocityX();
-            float bvy = b.getVelocityY();
-            float bw = b.getAngularVelocity();
             shape.computeAabb(bx, by, bc, bs, box);
+            boolean still = frozen(world, b);
+            float bvx = still ? 0f : b.getVelocityX();
+            float bvy = still ? 0f : b.getVelocityY();
+            float bw = still ? 0f : b.getAngularVelocity();
             float lowX = box[0];
             float lowY = box[1];
             float highX = box[2];
@@ -200,35 +208,48 @@ final class ObstacleGrid {
             shapes[k] = null;
         }
         bodyCount = count;
-        int segmentCount = segments == null ? 0 : segments.getSegmentCount();
-        for (int j = 0; j < segmentCount; j++) {
-            float ax = segments.getStartX(j);
-            float ay = segments.getStartY(j);
-            float bx = segments.getEndX(j);
-            float by = segments.getEndY(j);
-            float lowX = Math.min(ax, bx);
-            float lowY = Math.min(ay, by);
-            float highX = Math.max(ax, bx);
-            float highY = Math.max(ay, by);
-            if (lowX > rMaxX || highX < rMinX || lowY > rMaxY || highY < rMinY) {
-                continue;
-            }
-            int s = append(lowX, lowY, highX, highY) - bodyCount;
-            if (s == segX1.length) {
-                int size = 2 * s;
-                segX1 = Arrays.copyOf(segX1, size);
-                segY1 = Arrays.copyOf(segY1, size);
-                segX2 = Arrays.copyOf(segX2, size);
-                segY2 = Arrays.copyOf(segY2, size);
-            }
-            segX1[s] = ax;
-            segY1[s] = ay;
-            segX2[s] = bx;
-            segY2[s] = by;
+        // The landscape's segments near the particles (from its index); faces do not matter to particles.
+        landscape = world.getLandscape();
+        if (landscape.getSegmentCount() > 0) {
+            landscape.querySegments(rMinX, rMinY, rMaxX, rMaxY, this);
         }
+        landscape = null;
         if (count > 0) {
             index(sizeSum / count);
         }
+    }
+
+    /**
+     * Whether a body stands still this tick though it may have a velocity: a dynamic body outside
+     * the world's simulation area (its box, in {@link #box}, does not overlap the area) is frozen.
+     */
+    private boolean frozen(World world, Body b) {
+        return b.isDynamic() && world.hasSimulationArea()
+            && (box[0] > world.getSimulationAreaMaxX() || box[2] < world.getSimulationAreaMinX()
+                || box[1] > world.getSimulationAreaMaxY() || box[3] < world.getSimulationAreaMinY());
+    }
+
+    /** Takes a landscape segment reported by {@link Landscape#querySegments}. */
+    @Override
+    public boolean reportProxy(int index) {
+        Landscape land = landscape;
+        float ax = land.getStartX(index);
+        float ay = land.getStartY(index);
+        float bx = land.getEndX(index);
+        float by = land.getEndY(index);
+        int s = append(Math.min(ax, bx), Math.min(ay, by), Math.max(ax, bx), Math.max(ay, by)) - bodyCount;
+        if (s == segX1.length) {
+            int size = 2 * s;
+            segX1 = Arrays.copyOf(segX1, size);
+            segY1 = Arrays.copyOf(segY1, size);
+            segX2 = Arrays.copyOf(segX2, size);
+            segY2 = Arrays.copyOf(segY2, size);
+        }
+        segX1[s] = ax;
+        segY1[s] = ay;
+        segX2[s] = bx;
+        segY2[s] = by;
+        return true;
     }
 
     /** Adds an obstacle with its box and counts its size; returns its number. */

@@ -2,6 +2,7 @@ package org.emini.particle;
 
 import org.emini.math.EMath;
 import org.emini.shape.Circle;
+import org.emini.shape.MultiShape;
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 
@@ -190,7 +191,7 @@ final class ParticleCollider {
                 float lx = c * (x - g.x1[b]) + s * (y - g.y1[b]);
                 float ly = -s * (x - g.x1[b]) + c * (y - g.y1[b]);
                 Shape shape = g.shapes[b];
-                if (shape.getType() == Shape.TYPE_CIRCLE ? insideCircle((Circle) shape, lx, ly) : insidePolygon((Polygon) shape, lx, ly)) {
+                if (insideShape(shape, lx, ly)) {
                     k = b;
                 }
             }
@@ -296,22 +297,10 @@ final class ParticleCollider {
             return false;
         }
         if (best < g.bodyCount && g.count > g.bodyCount) {
-            // Moved onto a body's surface: not across the landscape.
-            float t = bestT;
-            float wx = bestX;
-            float wy = bestY;
-            float nx = bestNx;
-            float ny = bestNy;
-            float vx = bestVx;
-            float vy = bestVy;
-            clipToSegments(ax + t * (bx - ax), ay + t * (by - ay), wx, wy);
-            bestT = t;
+            // Moved onto a body's surface: not across the landscape (clipToSegments keeps best*).
+            clipToSegments(ax + bestT * (bx - ax), ay + bestT * (by - ay), bestX, bestY);
             bestX = settledX;
             bestY = settledY;
-            bestNx = nx;
-            bestNy = ny;
-            bestVx = vx;
-            bestVy = vy;
         }
         return true;
     }
@@ -363,10 +352,53 @@ final class ParticleCollider {
     }
 
     private boolean hitShape(Shape shape, float ax, float ay, float bx, float by) {
-        if (shape.getType() == Shape.TYPE_CIRCLE) {
+        int type = shape.getType();
+        if (type == Shape.TYPE_CIRCLE) {
             return hitCircle((Circle) shape, ax, ay, bx, by);
         }
-        return hitPolygon((Polygon) shape, ax, ay, bx, by);
+        if (type == Shape.TYPE_POLYGON) {
+            return hitPolygon((Polygon) shape, ax, ay, bx, by);
+        }
+        // A multi-shape: the earliest hit among its parts, which share the body's frame.
+        MultiShape multi = (MultiShape) shape;
+        float t = Float.POSITIVE_INFINITY;
+        float x = 0f;
+        float y = 0f;
+        float nx = 0f;
+        float ny = 0f;
+        for (int i = 0, n = multi.getShapeCount(); i < n; i++) {
+            if (hitShape(multi.getShape(i), ax, ay, bx, by) && hitT < t) {
+                t = hitT;
+                x = hitX;
+                y = hitY;
+                nx = hitNx;
+                ny = hitNy;
+            }
+        }
+        hitT = t;
+        hitX = x;
+        hitY = y;
+        hitNx = nx;
+        hitNy = ny;
+        return t <= 1f;
+    }
+
+    /** Whether a body-local point is inside a shape (for a multi-shape: in one of its parts). */
+    private boolean insideShape(Shape shape, float x, float y) {
+        int type = shape.getType();
+        if (type == Shape.TYPE_CIRCLE) {
+            return insideCircle((Circle) shape, x, y);
+        }
+        if (type == Shape.TYPE_POLYGON) {
+            return insidePolygon((Polygon) shape, x, y);
+        }
+        MultiShape multi = (MultiShape) shape;
+        for (int i = 0, n = multi.getShapeCount(); i < n; i++) {
+            if (insideShape(multi.getShape(i), x, y)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

@@ -23,8 +23,9 @@ import org.emini.math.EMath;
  *
  * <p>Particles move under gravity × {@link #getGravityFactor()}, lose {@link #getDamping()} of their
  * velocity each tick, bounce off interacting bodies (static or dynamic, whatever their collision
- * layers) and the landscape with the emitter's {@link #getElasticity()}, and never touch each other
- * or push anything. Births are spread over the tick: a particle born part-way through a tick has
+ * layers) and the landscape (from either side: faces do not matter to particles, as in the
+ * original) with the emitter's {@link #getElasticity()}, and never touch each other or push
+ * anything. Births are spread over the tick: a particle born part-way through a tick has
  * already moved for the rest of it, so a fast emitter makes a continuous stream, not one puff per
  * tick.
  *

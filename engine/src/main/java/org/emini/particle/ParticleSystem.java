@@ -5,16 +5,16 @@ import org.emini.dynamics.World;
 import org.emini.math.EMath;
 
 /**
- * A set of particle emitters and their stepping against a world's bodies.
+ * A set of particle emitters and their stepping against a world's bodies and landscape.
  *
  * <p>Every {@link World} owns one (its {@code addParticleEmitter} and related calls land here)
  * and steps it at the end of each tick, after the solver, so particles see the bodies where the
  * tick left them. An application may also own one and step it on its own schedule.
  *
  * <p>One step: each emitter ages its particles, drops the dead, moves the others ballistically and
- * emits the new ones; then, for the emitters whose particles collide, the interacting bodies near
- * the particles are put in a grid and every particle's motion is tested against them (see
- * {@code ParticleCollider}); last, damping. A step allocates nothing once the arrays have grown to
+ * emits the new ones; then, for the emitters whose particles collide, the interacting bodies and the
+ * landscape segments near the particles are put in a grid and every particle's motion is tested
+ * against them (see {@code ParticleCollider}); last, damping. A step allocates nothing once the arrays have grown to
  * the scene, and gives bit-identical results for the same world, emitters and seeds.
  *
  * <p>Particles move exactly on the parabola of constant gravity: x += v·dt + ½·g·dt², v += g·dt,
@@ -27,8 +27,6 @@ public final class ParticleSystem {
     private ParticleEmitter[] emitters = new ParticleEmitter[4];
     private int emitterCount;
     private final ObstacleGrid grid = new ObstacleGrid();
-    /** The segments particles bounce off besides the bodies: the landscape, once there is one. */
-    SegmentSource segments;
     private final ParticleCollider collider = new ParticleCollider(grid);
 
     /** Creates an empty particle system. */
@@ -164,7 +162,7 @@ public final class ParticleSystem {
             }
         }
         if (minX <= maxX && EMath.isFinite(maxX - minX) && EMath.isFinite(maxY - minY)) {
-            grid.build(world, segments, minX, minY, maxX, maxY, dt);
+            grid.build(world, minX, minY, maxX, maxY, dt);
             for (int i = 0; i < emitterCount; i++) {
                 ParticleEmitter e = emitters[i];
                 if (e.canCollide()) {

@@ -11,7 +11,8 @@ import org.emini.shape.Shape;
 import org.junit.jupiter.api.Test;
 
 /**
- * Ticks with 10,000 live particles bouncing in a box around moving bodies allocate nothing:
+ * Ticks with 10,000 live particles bouncing in a box around moving bodies and landscape segments
+ * allocate nothing:
  * counted with the JVM's per-thread allocation counter (bytes, not time).
  *
  * <p>While C2 is still compiling, the counter occasionally shows a few hundred bytes in one tick,
@@ -25,6 +26,9 @@ class ParticleAllocationTest {
         com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         World world = new World();
         ParticleScenes.box(world, 300f, 10f, 0f);
+        // A landscape ramp and ledge inside the box, hit by particles and bodies alike.
+        world.getLandscape().addSegment(-300f, 150f, -50f, 290f);
+        world.getLandscape().addSegment(100f, 100f, 250f, 100f);
         for (int i = 0; i < 20; i++) {
             Body b = new Body(-250f + 25f * i, -200f + 9f * (i % 5), Shape.createRectangle(18f, 12f), true);
             world.addBody(b);

@@ -74,11 +74,7 @@ class ParticleContainmentTest {
     void particlesStayInABoxFullOfTumblingBodies() {
         World world = new World();
         ParticleScenes.box(world, 300f, 10f, 0f);
-        Shape crate = Shape.createRectangle(24f, 18f);
-        Shape ball = Shape.createCircle(10f);
-        for (int i = 0; i < 40; i++) {
-            world.addBody(new Body(-260f + 13f * i, 200f - 30f * (i % 4), i % 2 == 0 ? crate : ball, true));
-        }
+        ParticleScenes.cratesAndBalls(world, 40, -260f, 13f, 200f);
         ParticleEmitter e = ParticleScenes.spray(5000, 5000f, 1000f, 800f, 800f);
         e.setEmitSegment(-100f, -250f, 100f, -250f);
         e.setElasticity(0.9f);
@@ -88,6 +84,48 @@ class ParticleContainmentTest {
             assertEquals(0, ParticleScenes.countOutsideBox(e, 300f, 0f), "tick " + t);
         }
         assertEquals(5000, e.getParticleCount());
+    }
+
+    /** A concave U of three boxes, turning inside the box: particles end every tick outside all its parts. */
+    @Test
+    void particlesEndEveryTickOutsideATurningConcaveMultiShape() {
+        World world = new World();
+        world.setGravity(0f, 0f);
+        ParticleScenes.box(world, 200f, 2f, 0f);
+        Shape u = Shape.createMultiShape(
+            Shape.createPolygon(-60f, 20f, 60f, 20f, 60f, 30f, -60f, 30f),
+            Shape.createPolygon(-60f, -50f, -50f, -50f, -50f, 20f, -60f, 20f),
+            Shape.createPolygon(50f, -50f, 60f, -50f, 60f, 20f, 50f, 20f));
+        Body cup = new Body(0f, 0f, u, true);
+        cup.setGravityAffected(false);
+        cup.setAngularVelocity(1.5f);
+        world.addBody(cup);
+        ParticleEmitter e = ParticleScenes.spray(3000, 1500f, 2f, 500f, 400f);
+        e.setEmitSegment(-150f, -150f, 150f, -150f);
+        world.addParticleEmitter(e);
+        for (int t = 0; t < 300; t++) {
+            world.tick();
+            assertEquals(0, ParticleScenes.countOutsideBox(e, 200f, 0f), "tick " + t);
+            assertEquals(0, countInside(e, cup), "tick " + t);
+        }
+    }
+
+    /**
+     * A dynamic body outside the simulation area is frozen with its velocity: particles see it
+     * stand still, so one that hits the face it would move towards bounces as off a wall.
+     */
+    @Test
+    void aFrozenBodyStandsStillForParticles() {
+        World world = new World();
+        world.setGravity(0f, 0f);
+        Body frozen = new Body(500f, 0f, Shape.createRectangle(20f, 20f), true);
+        frozen.setVelocity(300f, 0f);
+        world.addBody(frozen);
+        world.setSimulationArea(-100f, -100f, 100f, 100f);
+        ParticleEmitter e = ParticleScenes.one(world, 530f, 0f, -100f, 0f);
+        ParticleScenes.run(world, 10);
+        assertEquals(500f, frozen.getX(), 0f);
+        assertEquals(100f, e.getVelocityX(0), 1e-3f, "elastic bounce off a still face");
     }
 
     /** A bar turning at 6 rad/s (tip speed 600 px/s) inside the box bats particles but never lets one out. */
@@ -128,6 +166,15 @@ class ParticleContainmentTest {
     }
 
     private static boolean contains(Shape shape, float x, float y) {
+        if (shape instanceof org.emini.shape.MultiShape) {
+            org.emini.shape.MultiShape m = (org.emini.shape.MultiShape) shape;
+            for (int i = 0; i < m.getShapeCount(); i++) {
+                if (contains(m.getShape(i), x, y)) {
+                    return true;
+                }
+            }
+            return false;
+        }
         if (shape instanceof org.emini.shape.Circle) {
             org.emini.shape.Circle c = (org.emini.shape.Circle) shape;
             float dx = x - c.getCenterX();

@@ -51,6 +51,15 @@ final class ParticleScenes {
         return outside;
     }
 
+    /** Crates and balls in alternation, n of them from x = left in steps, in four staggered rows up from y = bottom. */
+    static void cratesAndBalls(World world, int n, float left, float step, float bottom) {
+        Shape crate = Shape.createRectangle(24f, 18f);
+        Shape ball = Shape.createCircle(10f);
+        for (int i = 0; i < n; i++) {
+            world.addBody(new Body(left + step * i, bottom - 30f * (i % 4), i % 2 == 0 ? crate : ball, true));
+        }
+    }
+
     /** A fixed emitter that sprays in every direction from the origin. */
     static ParticleEmitter spray(int max, float rate, float lifetime, float speed, float speedDeviation) {
         ParticleEmitter e = new ParticleEmitter(max);
