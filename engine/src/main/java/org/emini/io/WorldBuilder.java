@@ -9,6 +9,7 @@ import org.emini.dynamics.Constraint;
 import org.emini.dynamics.World;
 import org.emini.event.Event;
 import org.emini.math.EMath;
+import org.emini.particle.ParticleEmitter;
 import org.emini.shape.Shape;
 
 /**
@@ -29,20 +30,28 @@ import org.emini.shape.Shape;
  * <li>Events with their filters and targets in the engine's units (squared speeds as speeds,
  * angular velocity ranges negated, relative collision directions turned by π); set a listener on
  * the world to receive them.</li>
+ * <li>Particle emitters with every stored setting (emit angles keep their sign), each with its own
+ * seed; capacities above {@link #setParticleLimit(int)} are listed rather than allocated.</li>
  * <li>World record: gravity and the two damping fractions. Timestep and iterations keep the
  * engine's defaults (the file stores none).</li>
  * </ul>
- * Records whose engine feature is not available (multishapes, landscape segments, scripts,
- * particle emitters), records the engine refuses and unusable records are listed in
+ * Records whose engine feature is not available (multishapes, landscape segments, scripts),
+ * records the engine refuses and unusable records are listed in
  * {@link BuildResult#getUnsupported()}; records built differently from the original in
  * {@link BuildResult#getApproximations()}. Nothing is dropped silently.
  */
 public final class WorldBuilder {
     /** The default thickness of the slab that stands in for a line shape (px). */
     public static final float DEFAULT_LINE_THICKNESS = 1f;
+    /**
+     * The default largest particle-emitter capacity built (2 MiB of particle state): the engine
+     * allocates an emitter's pool at once, and a file may ask for 2³¹ − 1 particles.
+     */
+    public static final int DEFAULT_PARTICLE_LIMIT = 1 << 16;
 
     private UserData userData;
     private float lineThickness = DEFAULT_LINE_THICKNESS;
+    private int particleLimit = DEFAULT_PARTICLE_LIMIT;
 
     /** Creates a builder without a user-data factory. */
     public WorldBuilder() {
@@ -84,6 +93,21 @@ public final class WorldBuilder {
             throw new IllegalArgumentException("WorldBuilder.setLineThickness: px must be finite and > 0, was " + px);
         }
         lineThickness = px;
+        return this;
+    }
+
+    /**
+     * Sets the largest particle-emitter capacity built; emitters asking for more are listed as
+     * unsupported instead of allocating their pools.
+     *
+     * @param particles the limit, &gt; 0
+     * @return this builder
+     */
+    public WorldBuilder setParticleLimit(int particles) {
+        if (particles <= 0) {
+            throw new IllegalArgumentException("WorldBuilder.setParticleLimit: particles must be > 0, was " + particles);
+        }
+        particleLimit = particles;
         return this;
     }
 
@@ -143,7 +167,11 @@ public final class WorldBuilder {
         }
         for (int i = 0; i < document.getParticleEmitters().size(); i++) {
             userData(r, document.getParticleEmitters().get(i), otherData, UserData.TYPE_PARTICLE);
-            r.unsupported(UnsupportedElement.Kind.PARTICLE_EMITTER, i, "the engine has no particles yet");
+            ParticleEmitter e = ParticleMapping.build(document.getParticleEmitters().get(i), i, r, particleLimit);
+            if (e != null) {
+                world.addParticleEmitter(e);
+                r.setParticleEmitter(i, e);
+            }
         }
         if (document.getSettings() != null) {
             userData(r, document.getSettings(), otherData, UserData.TYPE_WORLD);
@@ -206,7 +234,7 @@ public final class WorldBuilder {
     }
 
     /** A factor the engine takes in [0, 1] (materials, damping): clamped, and noted when it was not. */
-    private static float unit(float value, UnsupportedElement.Kind kind, int index, String what, BuildResult r) {
+    static float unit(float value, UnsupportedElement.Kind kind, int index, String what, BuildResult r) {
         if (value >= 0f && value <= 1f) {
             return value;
         }
