@@ -23,6 +23,7 @@ public final class Collider {
     private static final float COINCIDENT_TOLERANCE = 1e-6f;
 
     private final PolygonCollider polygons = new PolygonCollider();
+    private final SegmentCollider segments = new SegmentCollider(polygons);
 
     /** Creates a collider with its scratch buffers. */
     public Collider() {
@@ -43,7 +44,8 @@ public final class Collider {
      * @param bs sin of B's rotation
      * @param speculativeDistance the largest gap still reported (px), normally &ge; 0
      * @param out receives the contact; pointCount 0 when the shapes are farther apart
-     * @throws IllegalArgumentException if the pair of shape types is not supported
+     * @throws IllegalArgumentException if the pair of shape types is not supported (a
+     *     {@link org.emini.shape.MultiShape} collides part by part: pass its parts)
      */
     public void collide(Shape a, float ax, float ay, float ac, float as, Shape b, float bx,
             float by, float bc, float bs, float speculativeDistance, Manifold out) {
@@ -226,6 +228,48 @@ public final class Collider {
     public void collidePolygons(Polygon a, float ax, float ay, float ac, float as, Polygon b,
             float bx, float by, float bc, float bs, float speculativeDistance, Manifold out) {
         polygons.collide(a, ax, ay, ac, as, b, bx, by, bc, bs, speculativeDistance, out);
+    }
+
+    /**
+     * Collides a landscape segment A with a circle or polygon B: one or two points whose normal
+     * points from the segment to B. A faced segment reports nothing for a shape whose centroid is on
+     * its open side; see {@link Segment} for the facing and the smoothing of joints.
+     *
+     * <p>Feature ids: a circle's point has id 0; a polygon's follow the polygon–polygon scheme, with
+     * the segment as A and its ends numbered 0 and 1 (which end is 0 depends on the side B is on).
+     *
+     * @param a the segment, in world coordinates
+     * @param b shape B, a circle or a polygon
+     * @param bx the world x of B's local origin (px)
+     * @param by the world y of B's local origin (px)
+     * @param bc cos of B's rotation
+     * @param bs sin of B's rotation
+     * @param speculativeDistance the largest gap still reported (px)
+     * @param out receives the contact
+     * @throws IllegalArgumentException if B is not a circle or a polygon
+     */
+    public void collideSegment(Segment a, Shape b, float bx, float by, float bc, float bs,
+            float speculativeDistance, Manifold out) {
+        int tb = b.getType();
+        if (tb == Shape.TYPE_POLYGON) {
+            segments.collidePolygon(a, (Polygon) b, bx, by, bc, bs, speculativeDistance, out);
+        } else if (tb == Shape.TYPE_CIRCLE) {
+            segments.collideCircle(a, (Circle) b, bx, by, bc, bs, speculativeDistance, out);
+        } else {
+            throw new IllegalArgumentException("Collider.collideSegment: no narrowphase for shape type "
+                    + tb + "; a multi-shape collides part by part");
+        }
+    }
+
+    /**
+     * The side of the segment the last {@link #collideSegment} call collided the shape from: +1 or
+     * −1 as in {@link Segment#side}, 0 when the segment ignored the shape. Pass it back through
+     * {@link Segment#side} while the contact persists.
+     *
+     * @return the side
+     */
+    public int getSegmentSide() {
+        return segments.foundSide;
     }
 
     /** Writes a one-point manifold given in A's local frame, converting it to the world. */

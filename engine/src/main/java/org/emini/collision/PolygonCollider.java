@@ -17,6 +17,8 @@ final class PolygonCollider {
     // than A's to become the reference, and the smallest incident-edge overlap with the
     // reference face that still counts as two distinct points.
     static final float LINEAR_TOLERANCE = 1e-3f;
+    // Face mask that tries every face.
+    static final int ALL_FACES = -1;
 
     private final float[] ax = new float[Shape.MAX_VERTICES];
     private final float[] ay = new float[Shape.MAX_VERTICES];
@@ -58,34 +60,8 @@ final class PolygonCollider {
             bny[j] = rs * nx + rc * ny;
         }
 
-        float sepA = maxSeparation(ax, ay, anx, any, na, bx, by, nb);
-        int edgeA = foundEdge;
-        // A separating face of A already settles it: B's faces need not be tested.
-        if (sepA > speculativeDistance) {
-            out.pointCount = 0;
-            return;
-        }
-        float sepB = maxSeparation(bx, by, bnx, bny, nb, ax, ay, na);
-        int edgeB = foundEdge;
-        if (sepB > speculativeDistance) {
-            out.pointCount = 0;
-            return;
-        }
-
-        float ra = a.getBoundingRadius();
-        float rb = b.getBoundingRadius();
-        float tol = LINEAR_TOLERANCE * (ra < rb ? ra : rb);
-        // Prefer A within the tolerance, but never pick a face that does not separate the shapes
-        // over one that does: then every reported gap is a true distance to the reference shape.
-        boolean flip = sepB > sepA + tol || (sepB > 0f && sepA <= 0f);
-        if (flip) {
-            clip(bx, by, bnx, bny, nb, edgeB, sepB, ax, ay, anx, any, na, true, tol,
-                    speculativeDistance, out);
-        } else {
-            clip(ax, ay, anx, any, na, edgeA, sepA, bx, by, bnx, bny, nb, false, tol,
-                    speculativeDistance, out);
-        }
-        if (out.pointCount == 0) {
+        if (!separateAndClip(na, na, nb, ALL_FACES, a.getBoundingRadius(), b.getBoundingRadius(),
+                speculativeDistance, out)) {
             return;
         }
         // A's frame to the world.
@@ -102,14 +78,92 @@ final class PolygonCollider {
     }
 
     /**
-     * The largest separation of polygon 2 from a face of polygon 1: for each face, the signed
-     * distance of polygon 2's deepest vertex; the face index goes to {@link #foundEdge}.
+     * Collides a one-sided segment A with a polygon B, in a frame with B's position as origin and
+     * the world's axes. A is the two-vertex polygon (x1, y1), (x2, y2) whose first face has the
+     * outward unit normal (nx, ny): only that face is tried as a separating axis, and only B's faces
+     * whose bit is set in admissible, so the normal never points where the caller forbids it. The
+     * caller handles a polygon lying wholly beyond an end of the segment, where the test on these
+     * axes alone could report an overlap that is not there.
+     * Vertex ids name A's vertices 0 (first given) and 1. The result is in the world.
+     */
+    void collideSegment(float x1, float y1, float x2, float y2, float nx, float ny,
+            Polygon b, float pbx, float pby, float bc, float bs, int admissible,
+            float speculativeDistance, Manifold out) {
+        ax[0] = x1 - pbx;
+        ay[0] = y1 - pby;
+        ax[1] = x2 - pbx;
+        ay[1] = y2 - pby;
+        anx[0] = nx;
+        any[0] = ny;
+        anx[1] = -nx;
+        any[1] = -ny;
+        int nb = b.getVertexCount();
+        for (int j = 0; j < nb; j++) {
+            float x = b.getVertexX(j);
+            float y = b.getVertexY(j);
+            bx[j] = bc * x - bs * y;
+            by[j] = bs * x + bc * y;
+            float mx = b.getNormalX(j);
+            float my = b.getNormalY(j);
+            bnx[j] = bc * mx - bs * my;
+            bny[j] = bs * mx + bc * my;
+        }
+        float ex = x2 - x1;
+        float ey = y2 - y1;
+        float halfLength = 0.5f * EMath.sqrt(ex * ex + ey * ey);
+        if (!separateAndClip(2, 1, nb, admissible, halfLength, b.getBoundingRadius(),
+                speculativeDistance, out)) {
+            return;
+        }
+        for (int k = 0; k < out.pointCount; k++) {
+            out.pointX[k] += pbx;
+            out.pointY[k] += pby;
+        }
+    }
+
+    /**
+     * The separating-axis test and clipping on the scratch arrays, in A's frame: A has na vertices
+     * of which the first facesA faces are tried, B has nb vertices of which the faces set in
+     * facesB are tried. Returns false (and no points) when the shapes are farther apart than the
+     * speculative distance.
+     */
+    private boolean separateAndClip(int na, int facesA, int nb, int facesB, float ra, float rb,
+            float speculativeDistance, Manifold out) {
+        float sepA = maxSeparation(ax, ay, anx, any, facesA, ALL_FACES, bx, by, nb);
+        int edgeA = foundEdge;
+        float sepB = maxSeparation(bx, by, bnx, bny, nb, facesB, ax, ay, na);
+        int edgeB = foundEdge;
+        if (sepA > speculativeDistance || sepB > speculativeDistance) {
+            out.pointCount = 0;
+            return false;
+        }
+        float tol = LINEAR_TOLERANCE * (ra < rb ? ra : rb);
+        // Prefer A within the tolerance, but never pick a face that does not separate the shapes
+        // over one that does: then every reported gap is a true distance to the reference shape.
+        boolean flip = sepB > sepA + tol || (sepB > 0f && sepA <= 0f);
+        if (flip) {
+            clip(bx, by, bnx, bny, nb, edgeB, sepB, ax, ay, anx, any, na, true, tol,
+                    speculativeDistance, out);
+        } else {
+            clip(ax, ay, anx, any, na, edgeA, sepA, bx, by, bnx, bny, nb, false, tol,
+                    speculativeDistance, out);
+        }
+        return out.pointCount > 0;
+    }
+
+    /**
+     * The largest separation of polygon 2 from a face of polygon 1: for each of the first n1 faces
+     * whose bit is set in faces, the signed distance of polygon 2's deepest vertex; the face index
+     * goes to {@link #foundEdge}. Negative infinity when no face is tried.
      */
     private float maxSeparation(float[] x1, float[] y1, float[] nx1, float[] ny1, int n1,
-            float[] x2, float[] y2, int n2) {
+            int faces, float[] x2, float[] y2, int n2) {
         int best = 0;
         float bestSeparation = Float.NEGATIVE_INFINITY;
         for (int i = 0; i < n1; i++) {
+            if ((faces & (1 << i)) == 0) {
+                continue;
+            }
             float nx = nx1[i];
             float ny = ny1[i];
             float vx = x1[i];

@@ -2,6 +2,7 @@ package org.emini.collision;
 
 import org.emini.math.EMath;
 import org.emini.shape.Circle;
+import org.emini.shape.MultiShape;
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 
@@ -24,6 +25,13 @@ public final class TimeOfImpact {
     public static final int MAX_ITERATIONS = 40;
 
     private int lastIterations;
+    // What the current sweep is against: a placed shape, or a segment.
+    private Shape fixedShape;
+    private Segment fixedSegment;
+    private float fx;
+    private float fy;
+    private float fc;
+    private float fs;
 
     /** Creates a solver. */
     public TimeOfImpact() {
@@ -58,6 +66,45 @@ public final class TimeOfImpact {
      */
     public float solve(Shape moving, float x0, float y0, float angle0, float x1, float y1, float angle1,
             Shape fixed, float fx, float fy, float fc, float fs, float target) {
+        fixedShape = fixed;
+        fixedSegment = null;
+        this.fx = fx;
+        this.fy = fy;
+        this.fc = fc;
+        this.fs = fs;
+        return advance(moving, x0, y0, angle0, x1, y1, angle1, target);
+    }
+
+    /**
+     * The first time in [0, 1] at which a moving shape comes within {@code target} of a landscape
+     * segment, which is solid from both sides here (the caller decides whether a faced segment
+     * stops the shape at all).
+     *
+     * @param moving the moving shape
+     * @param x0 start x of its origin (px)
+     * @param y0 start y (px)
+     * @param angle0 start angle (rad)
+     * @param x1 end x (px)
+     * @param y1 end y (px)
+     * @param angle1 end angle (rad)
+     * @param segment the segment
+     * @param target the distance at which the sweep stops (px), &gt; 0
+     * @return the time of impact in [0, 1], or 1 when the sweep ends without impact
+     */
+    public float solveSegment(Shape moving, float x0, float y0, float angle0, float x1, float y1, float angle1,
+            Segment segment, float target) {
+        fixedShape = null;
+        fixedSegment = segment;
+        return advance(moving, x0, y0, angle0, x1, y1, angle1, target);
+    }
+
+    private float distance(Shape moving, float x, float y, float c, float s) {
+        return fixedSegment != null ? segmentSeparation(moving, x, y, c, s, fixedSegment)
+            : separation(moving, x, y, c, s, fixedShape, fx, fy, fc, fs);
+    }
+
+    private float advance(Shape moving, float x0, float y0, float angle0, float x1, float y1, float angle1,
+            float target) {
         float dx = x1 - x0;
         float dy = y1 - y0;
         float da = angle1 - angle0;
@@ -67,7 +114,7 @@ public final class TimeOfImpact {
         if (bound <= 0f) {
             return 1f;
         }
-        float d0 = separation(moving, x0, y0, EMath.cos(angle0), EMath.sin(angle0), fixed, fx, fy, fc, fs);
+        float d0 = distance(moving, x0, y0, EMath.cos(angle0), EMath.sin(angle0));
         // Apart: stop within the target distance. Already touching (the contact solver owns the
         // pair): stop only where the body would sink deeper than it started by more than the
         // target, which catches a fast body rotating into what it touches.
@@ -76,7 +123,7 @@ public final class TimeOfImpact {
         while (lastIterations < MAX_ITERATIONS) {
             lastIterations++;
             float a = angle0 + t * da;
-            float d = separation(moving, x0 + t * dx, y0 + t * dy, EMath.cos(a), EMath.sin(a), fixed, fx, fy, fc, fs);
+            float d = distance(moving, x0 + t * dx, y0 + t * dy, EMath.cos(a), EMath.sin(a));
             if (d <= stopAt + tolerance) {
                 return t;
             }
@@ -110,6 +157,15 @@ public final class TimeOfImpact {
             }
             return Math.max(0.25f * min, 0f);
         }
+        if (shape.getType() == Shape.TYPE_MULTI) {
+            // The origin is at least as deep in the union as in the part that holds it deepest.
+            MultiShape m = (MultiShape) shape;
+            float best = 0f;
+            for (int i = 0; i < m.getShapeCount(); i++) {
+                best = Math.max(best, coreRadius(m.getShape(i)));
+            }
+            return best;
+        }
         return 0f;
     }
 
@@ -134,6 +190,18 @@ public final class TimeOfImpact {
             Shape b, float bx, float by, float bc, float bs) {
         int ta = a.getType();
         int tb = b.getType();
+        if (ta == Shape.TYPE_MULTI || tb == Shape.TYPE_MULTI) {
+            // The nearest pair of parts: the smallest of lower bounds bounds the smallest distance.
+            boolean splitA = ta == Shape.TYPE_MULTI;
+            MultiShape m = (MultiShape) (splitA ? a : b);
+            float best = Float.MAX_VALUE;
+            for (int i = 0; i < m.getShapeCount(); i++) {
+                float d = splitA ? separation(m.getShape(i), ax, ay, ac, as, b, bx, by, bc, bs)
+                    : separation(a, ax, ay, ac, as, m.getShape(i), bx, by, bc, bs);
+                best = Math.min(best, d);
+            }
+            return best;
+        }
         if (ta == Shape.TYPE_POLYGON && tb == Shape.TYPE_POLYGON) {
             Polygon pa = (Polygon) a;
             Polygon pb = (Polygon) b;
@@ -162,6 +230,76 @@ public final class TimeOfImpact {
                 ay + as * c.getCenterX() + ac * c.getCenterY(), c.getRadius());
         }
         throw new IllegalArgumentException("TimeOfImpact.separation: no bound for shape types " + ta + " and " + tb);
+    }
+
+    /**
+     * A lower bound of the distance between a placed shape and a segment (solid from both sides):
+     * the exact distance for a circle, separating axes (the segment's normal, the polygon's faces)
+     * for a polygon, the nearest part for a multi-shape.
+     *
+     * @param a the shape
+     * @param ax its x (px)
+     * @param ay its y (px)
+     * @param ac cos of its angle
+     * @param as sin of its angle
+     * @param seg the segment
+     * @return the bound (px)
+     */
+    public static float segmentSeparation(Shape a, float ax, float ay, float ac, float as, Segment seg) {
+        int type = a.getType();
+        if (type == Shape.TYPE_MULTI) {
+            MultiShape m = (MultiShape) a;
+            float best = Float.MAX_VALUE;
+            for (int i = 0; i < m.getShapeCount(); i++) {
+                best = Math.min(best, segmentSeparation(m.getShape(i), ax, ay, ac, as, seg));
+            }
+            return best;
+        }
+        float ex = seg.x2 - seg.x1;
+        float ey = seg.y2 - seg.y1;
+        float len2 = ex * ex + ey * ey;
+        if (type == Shape.TYPE_CIRCLE) {
+            Circle c = (Circle) a;
+            float px = ax + ac * c.getCenterX() - as * c.getCenterY() - seg.x1;
+            float py = ay + as * c.getCenterX() + ac * c.getCenterY() - seg.y1;
+            float t = len2 > 0f ? (px * ex + py * ey) / len2 : 0f;
+            t = t < 0f ? 0f : (t > 1f ? 1f : t);
+            float qx = px - t * ex;
+            float qy = py - t * ey;
+            return EMath.sqrt(qx * qx + qy * qy) - c.getRadius();
+        }
+        Polygon p = (Polygon) a;
+        int n = p.getVertexCount();
+        float best = -Float.MAX_VALUE;
+        float len = EMath.sqrt(len2);
+        if (len > 0f) {
+            // The segment's normal, both ways: the polygon wholly on one side.
+            float nx = -ey / len;
+            float ny = ex / len;
+            float low = Float.MAX_VALUE;
+            float high = -Float.MAX_VALUE;
+            for (int j = 0; j < n; j++) {
+                float lx = p.getVertexX(j);
+                float ly = p.getVertexY(j);
+                float d = (ax + ac * lx - as * ly - seg.x1) * nx + (ay + as * lx + ac * ly - seg.y1) * ny;
+                low = Math.min(low, d);
+                high = Math.max(high, d);
+            }
+            best = Math.max(low, -high);
+        }
+        for (int i = 0; i < n; i++) {
+            float lnx = p.getNormalX(i);
+            float lny = p.getNormalY(i);
+            float nx = ac * lnx - as * lny;
+            float ny = as * lnx + ac * lny;
+            float lvx = p.getVertexX(i);
+            float lvy = p.getVertexY(i);
+            float vx = ax + ac * lvx - as * lvy;
+            float vy = ay + as * lvx + ac * lvy;
+            float d = Math.min((seg.x1 - vx) * nx + (seg.y1 - vy) * ny, (seg.x2 - vx) * nx + (seg.y2 - vy) * ny);
+            best = Math.max(best, d);
+        }
+        return best;
     }
 
     /** Largest separation of B from A along A's face normals. */

@@ -35,10 +35,13 @@ public final class Body {
     float vy;
     float w;
 
-    // Accumulated force (mass·px/s²) and torque for the next tick; cleared by the tick.
+    // Accumulated force (mass·px/s²) and torque for the tick numbered forceTick; a body the tick
+    // does not simulate (static, or frozen outside the simulation area) keeps them, so they count
+    // only while forceTick is the world's current tick.
     float forceX;
     float forceY;
     float torque;
+    long forceTick;
 
     // Bookkeeping owned by the world.
     World world;
@@ -50,6 +53,10 @@ public final class Body {
     int solverIndex;
     Contact contactList;
     int contactCount;
+    // Simulated in the current tick: dynamic and inside the simulation area.
+    boolean awake;
+    // The world's landscape epoch when this body last looked for its segments; −1 to look again.
+    int landscapeEpoch = -1;
 
     /**
      * Creates a body.
@@ -126,7 +133,7 @@ public final class Body {
     public void setShape(Shape shape) {
         this.shape = Check.notNull("Body.setShape", "shape", shape);
         if (world != null) {
-            world.bodyGeometryChanged(this);
+            world.bodyShapeChanged(this);
         }
     }
 
@@ -554,8 +561,22 @@ public final class Body {
      * @param fy y component (mass·px/s²)
      */
     public void applyForce(float fx, float fy) {
-        forceX += Check.finite("Body.applyForce", "fx", fx);
-        forceY += Check.finite("Body.applyForce", "fy", fy);
+        Check.finite("Body.applyForce", "fx", fx);
+        Check.finite("Body.applyForce", "fy", fy);
+        forcesForThisTick();
+        forceX += fx;
+        forceY += fy;
+    }
+
+    /** Drops forces left from a tick that did not simulate this body. */
+    private void forcesForThisTick() {
+        long tick = world != null ? world.getTickCount() : forceTick;
+        if (forceTick != tick) {
+            forceX = 0f;
+            forceY = 0f;
+            torque = 0f;
+            forceTick = tick;
+        }
     }
 
     /**
@@ -583,6 +604,7 @@ public final class Body {
         Check.finite("Body.applyAcceleration", "ax", ax);
         Check.finite("Body.applyAcceleration", "ay", ay);
         if (dynamic) {
+            forcesForThisTick();
             float m = shape.getMass();
             forceX += m * ax;
             forceY += m * ay;
@@ -595,7 +617,9 @@ public final class Body {
      * @param t the torque (mass·px²/s²); positive grows the angle
      */
     public void applyTorque(float t) {
-        torque += Check.finite("Body.applyTorque", "torque", t);
+        Check.finite("Body.applyTorque", "torque", t);
+        forcesForThisTick();
+        torque += t;
     }
 
     /**

@@ -1,16 +1,32 @@
 package org.emini.dynamics;
 
 /**
- * A contact between two bodies whose bounding boxes overlap: up to two contact points with a common
- * normal, and the impulses the solver applied at them in the last tick.
+ * A contact between two bodies whose bounding boxes overlap, or between a body and a segment of the
+ * landscape: up to two contact points with a common normal, and the impulses the solver applied at
+ * them in the last tick.
  *
  * <p>Contacts persist from tick to tick while the bodies stay close, so their impulses warm-start
  * the solver. Contact objects are pooled by the world: do not keep a reference past the next tick.
  * A contact with no points is a pair that is near but not touching.
+ *
+ * <p>A body with a {@link org.emini.shape.MultiShape} has one contact per pair of parts (and per
+ * part and landscape segment); {@link #getPartA()} and {@link #getPartB()} tell which. A landscape
+ * contact ({@link #isLandscape()}) has the body as A and no body B; its normal points from the
+ * body to the segment.
  */
 public final class Contact {
     Body bodyA;
     Body bodyB;
+    int partA;
+    int partB;
+    // Landscape contacts: the segment's slot and stamp in the landscape; slot −1 for body pairs.
+    Landscape landscape;
+    int segmentSlot = -1;
+    int segmentStamp;
+    // The side of the segment the body touched last tick (Segment.side), kept while it touches.
+    int segmentSide;
+    // The tick in which the world last collected this contact for the solver.
+    long gathered = -1;
     // Intrusive doubly linked lists through both bodies' contact lists.
     Contact prevA;
     Contact nextA;
@@ -51,7 +67,7 @@ public final class Contact {
     /**
      * The second body.
      *
-     * @return body B
+     * @return body B, or null for a landscape contact
      */
     public Body getBodyB() {
         return bodyB;
@@ -61,10 +77,53 @@ public final class Contact {
      * The body on the other side of this contact.
      *
      * @param body one of the two bodies
-     * @return the other one
+     * @return the other one; null when that is the landscape
      */
     public Body getOther(Body body) {
         return body == bodyA ? bodyB : bodyA;
+    }
+
+    /**
+     * Whether this is a contact between body A and the landscape.
+     *
+     * @return true for a landscape contact
+     */
+    public boolean isLandscape() {
+        return segmentSlot >= 0;
+    }
+
+    /**
+     * The landscape segment of a landscape contact, as its current index in the landscape.
+     *
+     * @return the segment index, or −1 for a contact between two bodies (or a segment removed
+     *     since the last tick)
+     */
+    public int getSegment() {
+        if (segmentSlot < 0 || landscape.stampOf(segmentSlot) != segmentStamp) {
+            return -1;
+        }
+        return landscape.indexOfSlot(segmentSlot);
+    }
+
+    /**
+     * The part of body A's shape that touches: its index in A's
+     * {@link org.emini.shape.MultiShape}, or 0 when A's shape is a single shape.
+     *
+     * @return the part index
+     */
+    public int getPartA() {
+        return partA;
+    }
+
+    /**
+     * The part of body B's shape that touches: its index in B's
+     * {@link org.emini.shape.MultiShape}, or 0 when B's shape is a single shape or B is the
+     * landscape.
+     *
+     * @return the part index
+     */
+    public int getPartB() {
+        return partB;
     }
 
     /**
@@ -186,7 +245,8 @@ public final class Contact {
     }
 
     /**
-     * The friction coefficient of this contact: the product of the two shapes' friction factors.
+     * The friction coefficient of this contact: the product of the two shapes' friction factors
+     * (for a landscape contact, the shape's factor times the landscape's).
      *
      * @return the friction coefficient
      */
@@ -195,7 +255,8 @@ public final class Contact {
     }
 
     /**
-     * The elasticity of this contact: the product of the two shapes' elasticities.
+     * The elasticity of this contact: the product of the two shapes' elasticities (for a landscape
+     * contact, the shape's elasticity times the landscape's).
      *
      * @return the restitution coefficient
      */
@@ -212,6 +273,7 @@ public final class Contact {
 
     @Override
     public String toString() {
-        return "Contact(" + bodyA + ", " + bodyB + ", " + pointCount + " points)";
+        String other = segmentSlot >= 0 ? "landscape segment " + getSegment() : String.valueOf(bodyB);
+        return "Contact(" + bodyA + ", " + other + ", " + pointCount + " points)";
     }
 }

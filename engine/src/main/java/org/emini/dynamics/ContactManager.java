@@ -1,26 +1,49 @@
 package org.emini.dynamics;
 
+import java.util.Arrays;
 import org.emini.collision.BroadPhase;
 import org.emini.collision.Collider;
 import org.emini.collision.Manifold;
 import org.emini.collision.PairCallback;
+import org.emini.collision.QueryCallback;
+import org.emini.collision.Segment;
+import org.emini.shape.MultiShape;
+import org.emini.shape.Shape;
 
 /**
  * Where contacts are born, updated and forgotten.
  *
  * <p>A contact is created when the broadphase reports that two bodies' fat boxes began to overlap
- * and the pair may collide; it is updated by the narrowphase every tick and destroyed when the fat
- * boxes separate or the pair's filter changes. Contact objects are pooled, so steady-state ticking
- * allocates nothing.
+ * and the pair may collide, or when a dynamic body's fat box comes to overlap a landscape segment's
+ * box; it is updated by the narrowphase every tick and destroyed when the boxes separate or the
+ * pair's filter changes. A multi-shape body gets one contact per part (times the other side's
+ * parts), so each keeps its own feature ids for warm starting. Contact objects are pooled, so
+ * steady-state ticking allocates nothing.
+ *
+ * <p>Each tick only the active contacts, those of the bodies being simulated, are collided and
+ * solved; they are kept in contact-array order so the result does not depend on how they were
+ * collected.
  */
-final class ContactManager implements PairCallback {
+final class ContactManager implements PairCallback, QueryCallback {
     private final World world;
     private final Collider collider = new Collider();
     private final Manifold manifold = new Manifold();
+    private final Segment segment = new Segment();
     Contact[] contacts = new Contact[64];
     int count;
     private Contact[] pool = new Contact[64];
     private int poolCount;
+    /** The contacts collided and solved this tick. */
+    Contact[] active = new Contact[64];
+    int activeCount;
+    private int[] keys = new int[64];
+
+    // The landscape the contacts refer to; its changes advance the epoch, and a body whose epoch
+    // is behind looks for its segments again.
+    private Landscape landscape;
+    private int landscapeModCount;
+    private int landscapeEpoch;
+    private Body queryBody;
 
     ContactManager(World world) {
         this.world = world;
@@ -30,6 +53,14 @@ final class ContactManager implements PairCallback {
         return (a.isDynamic() || b.isDynamic())
             && a.isInteracting() && b.isInteracting()
             && (a.getCollisionLayers() & b.getCollisionLayers()) == 0;
+    }
+
+    static int partCount(Shape s) {
+        return s.getType() == Shape.TYPE_MULTI ? ((MultiShape) s).getShapeCount() : 1;
+    }
+
+    static Shape part(Shape s, int i) {
+        return s.getType() == Shape.TYPE_MULTI ? ((MultiShape) s).getShape(i) : s;
     }
 
     @Override
@@ -47,13 +78,21 @@ final class ContactManager implements PairCallback {
                 return;
             }
         }
-        create(a, b);
+        int na = partCount(a.getShape());
+        int nb = partCount(b.getShape());
+        for (int i = 0; i < na; i++) {
+            for (int j = 0; j < nb; j++) {
+                create(a, b, i, j);
+            }
+        }
     }
 
-    private void create(Body a, Body b) {
+    private Contact create(Body a, Body b, int partA, int partB) {
         Contact c = poolCount > 0 ? pool[--poolCount] : new Contact();
         c.bodyA = a;
         c.bodyB = b;
+        c.partA = partA;
+        c.partB = partB;
         c.pointCount = 0;
         c.filterDirty = false;
         c.normalImpulse[0] = 0f;
@@ -71,12 +110,14 @@ final class ContactManager implements PairCallback {
         a.contactList = c;
         a.contactCount++;
         c.prevB = null;
-        c.nextB = b.contactList;
-        if (b.contactList != null) {
+        c.nextB = b != null ? b.contactList : null;
+        if (b != null && b.contactList != null) {
             setPrev(b.contactList, b, c);
         }
-        b.contactList = c;
-        b.contactCount++;
+        if (b != null) {
+            b.contactList = c;
+            b.contactCount++;
+        }
         if (count == contacts.length) {
             Contact[] grown = new Contact[count * 2];
             System.arraycopy(contacts, 0, grown, 0, count);
@@ -84,6 +125,7 @@ final class ContactManager implements PairCallback {
         }
         c.index = count;
         contacts[count++] = c;
+        return c;
     }
 
     private static void setPrev(Contact k, Body b, Contact prev) {
@@ -116,7 +158,9 @@ final class ContactManager implements PairCallback {
 
     void destroy(Contact c) {
         unlink(c, c.bodyA, c.prevA, c.nextA);
-        unlink(c, c.bodyB, c.prevB, c.nextB);
+        if (c.bodyB != null) {
+            unlink(c, c.bodyB, c.prevB, c.nextB);
+        }
         // Swap-remove keeps the array dense; the order stays deterministic.
         int i = c.index;
         Contact last = contacts[--count];
@@ -126,6 +170,8 @@ final class ContactManager implements PairCallback {
         c.index = -1;
         c.bodyA = null;
         c.bodyB = null;
+        c.landscape = null;
+        c.segmentSlot = -1;
         c.prevA = c.nextA = c.prevB = c.nextB = null;
         if (poolCount == pool.length) {
             Contact[] grown = new Contact[poolCount * 2];
@@ -147,37 +193,191 @@ final class ContactManager implements PairCallback {
         }
     }
 
+    // ---------------------------------------------------------------------------------------------
+    // The landscape
+
     /**
-     * Runs the narrowphase on every contact, dropping those whose fat boxes no longer overlap.
-     * The speculative margin grows with the distance the pair can close in one tick, so bodies
-     * moving several pixels per tick are caught before they overlap.
+     * Starts a tick with the world's landscape: contacts with a replaced landscape are dropped, and
+     * any change of the segments sends every body back to look for its segments.
      */
-    void collide(BroadPhase broadPhase, float dt, float speculative) {
-        int i = 0;
-        while (i < count) {
-            Contact c = contacts[i];
-            Body a = c.bodyA;
-            Body b = c.bodyB;
-            if (c.filterDirty) {
-                c.filterDirty = false;
-                if (!shouldCollide(a, b)) {
-                    destroy(c);
-                    continue;
+    void beginLandscape(Landscape l) {
+        if (l != landscape) {
+            for (int i = 0; i < count;) {
+                if (contacts[i].segmentSlot >= 0) {
+                    destroy(contacts[i]);
+                } else {
+                    i++;
                 }
             }
-            if (!broadPhase.testOverlap(a.proxyId, b.proxyId)) {
-                destroy(c);
-                continue;
+            landscape = l;
+            landscapeModCount = l.modCount;
+            landscapeEpoch++;
+        } else if (l.modCount != landscapeModCount) {
+            landscapeModCount = l.modCount;
+            landscapeEpoch++;
+        }
+        l.prepare();
+    }
+
+    /**
+     * Creates the missing contacts of a simulated body with the segments its fat box overlaps, when
+     * that box has moved or the landscape changed since the body last looked.
+     */
+    void findLandscapeContacts(Body b, boolean moved, BroadPhase broadPhase) {
+        if (!moved && b.landscapeEpoch == landscapeEpoch) {
+            return;
+        }
+        b.landscapeEpoch = landscapeEpoch;
+        if (!b.isDynamic() || landscape.getSegmentCount() == 0) {
+            return;
+        }
+        queryBody = b;
+        int p = b.proxyId;
+        landscape.query(broadPhase.getFatMinX(p), broadPhase.getFatMinY(p), broadPhase.getFatMaxX(p),
+            broadPhase.getFatMaxY(p), this);
+        queryBody = null;
+    }
+
+    /** Makes a body look for its segments again when it is next simulated. */
+    static void forgetLandscape(Body b) {
+        b.landscapeEpoch = -1;
+    }
+
+    @Override
+    public boolean reportProxy(int slot) {
+        Body b = queryBody;
+        int parts = partCount(b.getShape());
+        for (int k = 0; k < parts; k++) {
+            if (!hasLandscapeContact(b, slot, k)) {
+                Contact c = create(b, null, k, 0);
+                c.landscape = landscape;
+                c.segmentSlot = slot;
+                c.segmentStamp = landscape.stampOf(slot);
             }
-            float margin = speculative + dt * (sweepSpeed(a) + sweepSpeed(b));
-            collider.collide(a.getShape(), a.x, a.y, a.c, a.s, b.getShape(), b.x, b.y, b.c, b.s, margin, manifold);
-            update(c, manifold);
-            i++;
+        }
+        return true;
+    }
+
+    private static boolean hasLandscapeContact(Body b, int slot, int part) {
+        for (Contact k = b.contactList; k != null; k = k.next(b)) {
+            if (k.segmentSlot == slot && k.partA == part) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Each tick
+
+    /** Makes every contact active (no simulation area: every body is simulated). */
+    void gatherAll() {
+        ensureActive(count);
+        System.arraycopy(contacts, 0, active, 0, count);
+        activeCount = count;
+    }
+
+    /**
+     * Makes active the contacts of the given simulated bodies, in contact-array order. The work is
+     * proportional to those bodies' contacts, not to all contacts.
+     */
+    void gather(Body[] bodies, int n, long tick) {
+        int k = 0;
+        for (int i = 0; i < n; i++) {
+            Body b = bodies[i];
+            for (Contact c = b.contactList; c != null; c = c.next(b)) {
+                if (c.gathered != tick) {
+                    c.gathered = tick;
+                    if (k == keys.length) {
+                        keys = Arrays.copyOf(keys, 2 * k);
+                    }
+                    keys[k++] = c.index;
+                }
+            }
+        }
+        IntSort.sort(keys, k);
+        ensureActive(k);
+        for (int i = 0; i < k; i++) {
+            active[i] = contacts[keys[i]];
+        }
+        activeCount = k;
+    }
+
+    private void ensureActive(int n) {
+        if (active.length < n) {
+            active = new Contact[Math.max(n, 2 * active.length)];
         }
     }
 
+    /**
+     * Runs the narrowphase on every active contact, dropping those whose fat boxes no longer
+     * overlap. The speculative margin grows with the distance the pair can close in one tick, so
+     * bodies moving several pixels per tick are caught before they overlap.
+     */
+    void collide(BroadPhase broadPhase, float dt, float speculative) {
+        int kept = 0;
+        for (int i = 0; i < activeCount; i++) {
+            Contact c = active[i];
+            active[i] = null;
+            boolean alive = c.segmentSlot >= 0 ? collideLandscape(c, broadPhase, dt, speculative)
+                : collideBodies(c, broadPhase, dt, speculative);
+            if (alive) {
+                active[kept++] = c;
+            }
+        }
+        activeCount = kept;
+    }
+
+    private boolean collideBodies(Contact c, BroadPhase broadPhase, float dt, float speculative) {
+        Body a = c.bodyA;
+        Body b = c.bodyB;
+        if (c.filterDirty) {
+            c.filterDirty = false;
+            if (!shouldCollide(a, b)) {
+                destroy(c);
+                return false;
+            }
+        }
+        if (!broadPhase.testOverlap(a.proxyId, b.proxyId)) {
+            destroy(c);
+            return false;
+        }
+        float margin = speculative + dt * (sweepSpeed(a) + sweepSpeed(b));
+        collider.collide(part(a.getShape(), c.partA), a.x, a.y, a.c, a.s, part(b.getShape(), c.partB), b.x, b.y,
+            b.c, b.s, margin, manifold);
+        Shape sa = a.getShape();
+        Shape sb = b.getShape();
+        update(c, manifold, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity());
+        return true;
+    }
+
+    private boolean collideLandscape(Contact c, BroadPhase broadPhase, float dt, float speculative) {
+        Body a = c.bodyA;
+        Landscape l = c.landscape;
+        int slot = c.segmentSlot;
+        int p = a.proxyId;
+        if ((c.filterDirty && !a.isDynamic()) || l.stampOf(slot) != c.segmentStamp
+            || !l.overlaps(slot, broadPhase.getFatMinX(p), broadPhase.getFatMinY(p), broadPhase.getFatMaxX(p),
+                broadPhase.getFatMaxY(p))) {
+            destroy(c);
+            return false;
+        }
+        c.filterDirty = false;
+        l.fill(slot, segment);
+        segment.side = c.pointCount > 0 ? c.segmentSide : 0;
+        float margin = speculative + dt * sweepSpeed(a);
+        collider.collideSegment(segment, part(a.getShape(), c.partA), a.x, a.y, a.c, a.s, margin, manifold);
+        c.segmentSide = collider.getSegmentSide();
+        // The collider's normal points from the segment to the body; the contact's from A, the body.
+        manifold.normalX = -manifold.normalX;
+        manifold.normalY = -manifold.normalY;
+        Shape sa = a.getShape();
+        update(c, manifold, sa.getFriction() * l.getFriction(), sa.getElasticity() * l.getElasticity());
+        return true;
+    }
+
     private static float sweepSpeed(Body b) {
-        if (!b.isDynamic()) {
+        if (!b.awake) {
             return 0f;
         }
         float vx = b.vx < 0f ? -b.vx : b.vx;
@@ -187,7 +387,7 @@ final class ContactManager implements PairCallback {
         return vx + vy + w * b.getShape().getBoundingRadius();
     }
 
-    private static void update(Contact c, Manifold m) {
+    private static void update(Contact c, Manifold m, float friction, float restitution) {
         int oldCount = c.pointCount;
         float n0 = c.normalImpulse[0];
         float n1 = c.normalImpulse[1];
@@ -198,8 +398,8 @@ final class ContactManager implements PairCallback {
         c.pointCount = m.pointCount;
         c.normalX = m.normalX;
         c.normalY = m.normalY;
-        c.friction = c.bodyA.getShape().getFriction() * c.bodyB.getShape().getFriction();
-        c.restitution = c.bodyA.getShape().getElasticity() * c.bodyB.getShape().getElasticity();
+        c.friction = friction;
+        c.restitution = restitution;
         for (int p = 0; p < m.pointCount; p++) {
             c.pointX[p] = m.pointX[p];
             c.pointY[p] = m.pointY[p];

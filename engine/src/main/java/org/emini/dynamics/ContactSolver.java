@@ -84,8 +84,12 @@ final class ContactSolver {
             if (c.pointCount == 0) {
                 continue;
             }
-            int ia = c.bodyA.solverIndex;
-            int ib = c.bodyB.solverIndex;
+            Body a = c.bodyA;
+            // A landscape contact has no body B: the static slot, anchored where A is, so that its
+            // arm is A's and no large world coordinate enters the separation update.
+            Body b = c.bodyB != null ? c.bodyB : a;
+            int ia = a.solverIndex;
+            int ib = c.bodyB != null ? b.solverIndex : 0;
             if (ia == 0 && ib == 0) {
                 continue;
             }
@@ -117,8 +121,6 @@ final class ContactSolver {
             float vbx = st[ob + VX];
             float vby = st[ob + VY];
             float wb = st[ob + W];
-            Body a = c.bodyA;
-            Body b = c.bodyB;
             for (int p = 0; p < c.pointCount; p++) {
                 int po = fo + P0 + p * PS;
                 float rax = c.pointX[p] - a.x;

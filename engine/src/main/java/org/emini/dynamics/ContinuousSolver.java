@@ -11,14 +11,15 @@ import static org.emini.dynamics.SolverBodies.Y;
 
 import org.emini.collision.BroadPhase;
 import org.emini.collision.QueryCallback;
+import org.emini.collision.Segment;
 import org.emini.collision.TimeOfImpact;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
 /**
  * The fast-body pass: after the solver, a body that moved more than half its smallest extent in
- * the tick is swept from its start pose to its end pose against static bodies (and, for bullets,
- * against other bodies at their end poses). If it would have touched one on the way, it is put
+ * the tick is swept from its start pose to its end pose against static bodies and the landscape
+ * (and, for bullets, against other bodies at their end poses). If it would have touched one on the way, it is put
  * back at the time of impact; its velocity is kept, so the next tick's speculative contact
  * resolves the collision. Speculative contacts alone stop most fast bodies; this pass catches the
  * rest, notably fast-spinning bodies with long arms.
@@ -40,6 +41,8 @@ final class ContinuousSolver implements QueryCallback {
     private float fraction;
     private int sweeps;
     private float[] state;
+
+    private final LandscapeSweep segments = new LandscapeSweep();
 
     ContinuousSolver(World world) {
         this.world = world;
@@ -76,8 +79,12 @@ final class ContinuousSolver implements QueryCallback {
             fraction = 1f;
             shape.computeAabb(x0, y0, b.c, b.s, box);
             shape.computeAabb(x1, y1, st[o + C], st[o + S], box2);
-            broadPhase.query(Math.min(box[0], box2[0]), Math.min(box[1], box2[1]),
-                Math.max(box[2], box2[2]), Math.max(box[3], box2[3]), this);
+            float minX = Math.min(box[0], box2[0]);
+            float minY = Math.min(box[1], box2[1]);
+            float maxX = Math.max(box[2], box2[2]);
+            float maxY = Math.max(box[3], box2[3]);
+            broadPhase.query(minX, minY, maxX, maxY, this);
+            segments.sweep(minX, minY, maxX, maxY);
             if (fraction < 1f) {
                 float a = a0 + fraction * da;
                 st[o + X] = x0 + fraction * dx;
@@ -118,5 +125,57 @@ final class ContinuousSolver implements QueryCallback {
             fraction = t;
         }
         return true;
+    }
+
+    /**
+     * The sweep against the landscape: the segments whose boxes meet the swept box and that the
+     * body would get through by the end pose, its centre crossing the segment's line or its shape
+     * sinking deeper than its core radius (what the contacts would not undo). Not the segments a
+     * body merely slides onto along a chain, nor a faced segment whose open side it starts on (it
+     * may pass), nor zero-length ones (they stop nothing).
+     */
+    private final class LandscapeSweep implements QueryCallback {
+        private final Segment segment = new Segment();
+        private Landscape landscape;
+
+        void sweep(float minX, float minY, float maxX, float maxY) {
+            landscape = world.getLandscape();
+            if (landscape.getSegmentCount() > 0) {
+                landscape.query(minX, minY, maxX, maxY, this);
+            }
+            landscape = null;
+        }
+
+        @Override
+        public boolean reportProxy(int slot) {
+            landscape.fill(slot, segment);
+            Shape shape = moving.getShape();
+            float ex = segment.x2 - segment.x1;
+            float ey = segment.y2 - segment.y1;
+            if (ex * ex + ey * ey < 1e-12f) {
+                return true;
+            }
+            // (end − start) × (centre − start): negative on the left side, which face 1 blocks.
+            float lx = shape.getCentroidX();
+            float ly = shape.getCentroidY();
+            float before = ex * (y0 + moving.s * lx + moving.c * ly - segment.y1)
+                - ey * (x0 + moving.c * lx - moving.s * ly - segment.x1);
+            if (segment.face != Segment.FACE_NONE && (segment.face == Segment.FACE_LEFT) != (before < 0f)) {
+                return true;
+            }
+            float c1 = state[moving.solverIndex * SolverBodies.STRIDE + C];
+            float s1 = state[moving.solverIndex * SolverBodies.STRIDE + S];
+            float after = ex * (y1 + s1 * lx + c1 * ly - segment.y1) - ey * (x1 + c1 * lx - s1 * ly - segment.x1);
+            boolean crossed = (before < 0f) != (after < 0f);
+            if (!crossed && TimeOfImpact.segmentSeparation(shape, x1, y1, c1, s1, segment)
+                    > -Math.max(TimeOfImpact.coreRadius(shape), target)) {
+                return true;
+            }
+            float t = toi.solveSegment(shape, x0, y0, a0, x1, y1, a1, segment, target);
+            if (t < fraction) {
+                fraction = t;
+            }
+            return true;
+        }
     }
 }

@@ -58,8 +58,8 @@ final class SolverBodies {
         count = 1;
     }
 
-    /** Copies a dynamic body in; returns its slot. */
-    int add(Body b, float gravityX, float gravityY) {
+    /** Copies a dynamic body in, with the forces applied for this tick; returns its slot. */
+    int add(Body b, float gravityX, float gravityY, long tick) {
         int slot = count++;
         bodies[slot] = b;
         float[] st = state;
@@ -81,9 +81,11 @@ final class SolverBodies {
         st[o + S] = b.s;
         st[o + ANGLE] = b.angle;
         float g = b.isAffectedByGravity() ? 1f : 0f;
-        st[o + AX] = g * gravityX + im * b.forceX;
-        st[o + AY] = g * gravityY + im * b.forceY;
-        alpha[slot] = ii * b.torque;
+        // Forces left from a tick that did not simulate the body (it was frozen) do not count.
+        float f = b.forceTick == tick ? 1f : 0f;
+        st[o + AX] = g * gravityX + f * im * b.forceX;
+        st[o + AY] = g * gravityY + f * im * b.forceY;
+        alpha[slot] = f * ii * b.torque;
         return slot;
     }
 

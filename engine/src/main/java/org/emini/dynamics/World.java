@@ -12,8 +12,10 @@ import org.emini.particle.ParticleSystem;
  * <p>Defaults are the original engine's: 20 ticks per second, 10 iterations, gravity (0, 100) px/s²
  * pointing down the screen, no damping. Change bodies and settings only between ticks.
  *
- * <p>One tick: update the broadphase and create contacts for pairs that came close; run the
- * narrowphase on every contact; then solve. The solver splits the tick into substeps, one per
+ * <p>One tick: find the bodies to simulate (all dynamic bodies, or those inside the
+ * {@linkplain #setSimulationArea(float, float, float, float) simulation area}); update the
+ * broadphase and create contacts for pairs that came close and for bodies near segments of the
+ * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver splits the tick into substeps, one per
  * iteration: each substep integrates velocities, warm-starts, makes one soft (position-correcting)
  * pass over the contacts, integrates positions and makes one rigid relax pass. A restitution pass
  * ends the tick. In dynamic-iteration mode the solver stops solving once a relax pass changes no
@@ -58,6 +60,11 @@ public final class World {
     private final Softness soft = new Softness();
     private final Softness staticSoft = new Softness();
     private final float[] aabb = new float[4];
+    private Landscape landscape = new Landscape();
+    private final SimulationArea area = new SimulationArea();
+    // Bodies whose pose or shape the application changed since the last tick.
+    private Body[] dirtyBodies = new Body[16];
+    private int dirtyCount;
     private float lastSubstep;
     private int lastIterationCount;
     private long tickCount;
@@ -245,6 +252,11 @@ public final class World {
             bodies = grown;
         }
         body.world = this;
+        body.forceTick = tickCount;
+        body.awake = false;
+        body.solverIndex = 0;
+        body.proxyDirty = false;
+        ContactManager.forgetLandscape(body);
         body.id = nextBodyId++;
         body.worldIndex = bodyCount;
         bodies[bodyCount++] = body;
@@ -285,6 +297,9 @@ public final class World {
         body.worldIndex = -1;
         body.proxyId = -1;
         body.slot = -1;
+        body.awake = false;
+        body.solverIndex = 0;
+        body.proxyDirty = false;
         return true;
     }
 
@@ -334,12 +349,148 @@ public final class World {
     }
 
     void bodyGeometryChanged(Body b) {
-        b.proxyDirty = true;
+        if (!b.proxyDirty) {
+            b.proxyDirty = true;
+            if (dirtyCount == dirtyBodies.length) {
+                Body[] grown = new Body[2 * dirtyCount];
+                System.arraycopy(dirtyBodies, 0, grown, 0, dirtyCount);
+                dirtyBodies = grown;
+            }
+            dirtyBodies[dirtyCount++] = b;
+        }
+    }
+
+    void bodyShapeChanged(Body b) {
+        // Contacts name the shape's parts: start afresh.
+        contacts.destroyContactsOf(b);
+        bodyGeometryChanged(b);
+        broadPhase.touchProxy(b.proxyId);
+        ContactManager.forgetLandscape(b);
     }
 
     void bodyFilterChanged(Body b) {
         contacts.markFilterDirty(b);
         broadPhase.touchProxy(b.proxyId);
+        ContactManager.forgetLandscape(b);
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Landscape and simulation area
+
+    /**
+     * The world's landscape. A new world has an empty one.
+     *
+     * @return the landscape, never null
+     */
+    public Landscape getLandscape() {
+        return landscape;
+    }
+
+    /**
+     * Replaces the world's landscape; contacts with the old one end at the next tick.
+     *
+     * @param landscape the landscape
+     */
+    public void setLandscape(Landscape landscape) {
+        this.landscape = Check.notNull("World.setLandscape", "landscape", landscape);
+    }
+
+    /**
+     * Restricts the simulation to a rectangle. A dynamic body counts as inside when its bounding
+     * box overlaps the rectangle; bodies outside are frozen and cost nothing: they are not
+     * integrated, not moved in the broadphase, not collided with each other or the landscape and
+     * not solved. Bodies inside still collide with frozen bodies, which stand still like static
+     * ones, so nothing falls into a body beyond the edge. A frozen body keeps its velocity and
+     * moves on when the area, which may be moved between any two ticks, takes it in again.
+     * Constraints between a body inside and a frozen one hold the frozen one fixed.
+     *
+     * @param minX the left edge (px)
+     * @param minY the top edge (px)
+     * @param maxX the right edge (px), ≥ minX
+     * @param maxY the bottom edge (px), ≥ minY
+     */
+    public void setSimulationArea(float minX, float minY, float maxX, float maxY) {
+        String where = "World.setSimulationArea";
+        Check.finite(where, "minX", minX);
+        Check.finite(where, "minY", minY);
+        Check.finite(where, "maxX", maxX);
+        Check.finite(where, "maxY", maxY);
+        if (maxX < minX || maxY < minY) {
+            throw new IllegalArgumentException(where + ": the area (" + minX + ", " + minY + ") to (" + maxX + ", "
+                + maxY + ") has max < min");
+        }
+        area.set(minX, minY, maxX, maxY);
+    }
+
+    /**
+     * Restricts the simulation to a range of x over the full height, like the original engine's
+     * {@code setSimulationArea(start, end)}; see {@link #setSimulationArea(float, float, float, float)}.
+     *
+     * @param startX the left edge (px)
+     * @param endX the right edge (px), ≥ startX
+     */
+    public void setSimulationArea(float startX, float endX) {
+        setSimulationArea(startX, -Float.MAX_VALUE, endX, Float.MAX_VALUE);
+    }
+
+    /** Simulates the whole world again (the default). */
+    public void clearSimulationArea() {
+        area.clear();
+    }
+
+    /**
+     * Whether a simulation area is set.
+     *
+     * @return true when the simulation is restricted to an area
+     */
+    public boolean hasSimulationArea() {
+        return area.isBounded();
+    }
+
+    /**
+     * The left edge of the simulation area.
+     *
+     * @return min x (px); meaningless without an area
+     */
+    public float getSimulationAreaMinX() {
+        return area.minX();
+    }
+
+    /**
+     * The top edge of the simulation area.
+     *
+     * @return min y (px); meaningless without an area
+     */
+    public float getSimulationAreaMinY() {
+        return area.minY();
+    }
+
+    /**
+     * The right edge of the simulation area.
+     *
+     * @return max x (px); meaningless without an area
+     */
+    public float getSimulationAreaMaxX() {
+        return area.maxX();
+    }
+
+    /**
+     * The bottom edge of the simulation area.
+     *
+     * @return max y (px); meaningless without an area
+     */
+    public float getSimulationAreaMaxY() {
+        return area.maxY();
+    }
+
+    /**
+     * The number of dynamic bodies the last tick simulated: all of them without a simulation area,
+     * those inside it with one.
+     *
+     * @return the count
+     */
+    public int getSimulatedBodyCount() {
+        return area.count;
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -622,7 +773,8 @@ public final class World {
     // Contacts
 
     /**
-     * The number of contacts (pairs of bodies close enough to be tested), touching or not.
+     * The number of contacts, touching or not: pairs of bodies close enough to be tested (one per
+     * pair of parts for multi-shapes) and bodies near landscape segments (one per segment).
      *
      * @return the count
      */
@@ -664,8 +816,15 @@ public final class World {
         for (int i = 0; i < forceCount; i++) {
             forces[i].applyForce(this, dt);
         }
+        area.collect(this, broadPhase, bodies, bodyCount);
+        contacts.beginLandscape(landscape);
         updateBroadPhase(dt);
         broadPhase.updatePairs(contacts);
+        if (area.isBounded()) {
+            contacts.gather(area.bodies, area.count, tickCount);
+        } else {
+            contacts.gatherAll();
+        }
         contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
         solve(dt);
         if (particles.getEmitterCount() > 0) {
@@ -679,16 +838,28 @@ public final class World {
         }
     }
 
+    /** Moves the proxies of the simulated bodies and of the bodies the application moved. */
     private void updateBroadPhase(float dt) {
         float[] box = aabb;
-        for (int i = 0; i < bodyCount; i++) {
-            Body b = bodies[i];
-            if (!b.isDynamic() && !b.proxyDirty) {
+        for (int i = 0; i < dirtyCount; i++) {
+            Body b = dirtyBodies[i];
+            dirtyBodies[i] = null;
+            if (b.world != this || !b.proxyDirty || b.awake) {
                 continue;
             }
             b.proxyDirty = false;
             b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-            broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], b.vx * dt, b.vy * dt);
+            broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], 0f, 0f);
+            ContactManager.forgetLandscape(b);
+        }
+        dirtyCount = 0;
+        Body[] simulated = area.bodies;
+        for (int i = 0, n = area.count; i < n; i++) {
+            Body b = simulated[i];
+            b.proxyDirty = false;
+            b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
+            boolean moved = broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], b.vx * dt, b.vy * dt);
+            contacts.findLandscapeContacts(b, moved, broadPhase);
         }
     }
 
@@ -696,16 +867,18 @@ public final class World {
         int n = iterations;
         float h = dt / n;
         SolverBodies sb = solverBodies;
-        sb.reset(bodyCount);
-        for (int i = 0; i < bodyCount; i++) {
-            Body b = bodies[i];
-            b.solverIndex = b.isDynamic() ? sb.add(b, gravityX, gravityY) : 0;
+        Body[] simulated = area.bodies;
+        int simulatedCount = area.count;
+        sb.reset(simulatedCount);
+        for (int i = 0; i < simulatedCount; i++) {
+            Body b = simulated[i];
+            b.solverIndex = sb.add(b, gravityX, gravityY, tickCount);
         }
         setSoftness(h);
         float jointHertz = settings.getJointHertz();
         float jointDamping = settings.getJointDampingRatio();
         step.begin(dt, h, jointHertz, jointDamping);
-        contactSolver.prepare(contacts.contacts, contacts.count, sb, soft, staticSoft);
+        contactSolver.prepare(contacts.active, contacts.activeCount, sb, soft, staticSoft);
         // Stored impulses belong to the substep they were computed for.
         if (lastSubstep != 0f && lastSubstep != h) {
             contactSolver.scaleImpulses(h / lastSubstep);
@@ -759,15 +932,6 @@ public final class World {
         if (bad != null) {
             throw new IllegalStateException("World.tick: " + bad + " became non-finite in tick " + tickCount
                 + "; check the forces and settings applied to it");
-        }
-        for (int i = 0; i < bodyCount; i++) {
-            Body b = bodies[i];
-            if (b.isDynamic()) {
-                continue;
-            }
-            b.forceX = 0f;
-            b.forceY = 0f;
-            b.torque = 0f;
         }
     }
 

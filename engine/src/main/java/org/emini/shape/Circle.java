@@ -88,6 +88,13 @@ public final class Circle extends Shape {
     }
 
     @Override
+    Circle translated(float dx, float dy) {
+        Circle c = new Circle(radius, centerX + dx, centerY + dy);
+        c.copyMaterial(this);
+        return c;
+    }
+
+    @Override
     public void computeAabb(float x, float y, float c, float s, float[] out) {
         float wx = x + c * centerX - s * centerY;
         float wy = y + s * centerX + c * centerY;

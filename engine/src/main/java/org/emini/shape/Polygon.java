@@ -142,12 +142,15 @@ public final class Polygon extends Shape {
      * @return the centred polygon
      */
     public Polygon centred() {
-        float cx = getCentroidX();
-        float cy = getCentroidY();
+        return translated(-getCentroidX(), -getCentroidY());
+    }
+
+    @Override
+    Polygon translated(float dx, float dy) {
         float[] xy = new float[2 * vx.length];
         for (int i = 0; i < vx.length; i++) {
-            xy[2 * i] = vx[i] - cx;
-            xy[2 * i + 1] = vy[i] - cy;
+            xy[2 * i] = vx[i] + dx;
+            xy[2 * i + 1] = vy[i] + dy;
         }
         // A translated valid polygon stays valid: no second cleaning, which could round differently.
         Polygon p = new Polygon(ShapeGeometry.ofPolygon(xy));

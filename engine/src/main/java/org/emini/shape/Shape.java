@@ -3,7 +3,8 @@ package org.emini.shape;
 import org.emini.math.EMath;
 
 /**
- * A collision shape with its material and mass: a {@link Circle} or a convex {@link Polygon}.
+ * A collision shape with its material and mass: a {@link Circle}, a convex {@link Polygon}, or a
+ * {@link MultiShape} made of several of them.
  *
  * <p>Coordinates are local: the origin is the position and the centre of rotation of the body
  * that uses the shape. Shapes are not re-centred automatically; an off-centre shape rotates about
@@ -17,6 +18,8 @@ public abstract class Shape {
     public static final int TYPE_CIRCLE = 0;
     /** Type code of {@link Polygon}. */
     public static final int TYPE_POLYGON = 1;
+    /** Type code of {@link MultiShape}. */
+    public static final int TYPE_MULTI = 2;
     /** The largest number of vertices a polygon may have, as in the original engine. */
     public static final int MAX_VERTICES = 12;
     /** Mass of a new shape. */
@@ -45,7 +48,7 @@ public abstract class Shape {
         centroidY = geometry.centroidY;
         unitInertia = geometry.unitInertia;
         boundingRadius = geometry.boundingRadius;
-        applyMass(DEFAULT_MASS);
+        applyMass(geometry.mass);
     }
 
     /**
@@ -118,6 +121,18 @@ public abstract class Shape {
         return new Polygon(xy);
     }
 
+    /**
+     * Creates a multi-shape from convex parts placed in one local frame; see
+     * {@link MultiShape#MultiShape(Shape...)}.
+     *
+     * @param parts circles and polygons, at least one
+     * @return the multi-shape
+     * @throws IllegalArgumentException if there are no parts, or a part is null or a multi-shape
+     */
+    public static MultiShape createMultiShape(Shape... parts) {
+        return new MultiShape(parts);
+    }
+
     private static void checkSize(String place, String name, float value) {
         if (!(EMath.isFinite(value) && value > 0f)) {
             throw new IllegalArgumentException(
@@ -128,7 +143,7 @@ public abstract class Shape {
     /**
      * The kind of shape.
      *
-     * @return {@link #TYPE_CIRCLE} or {@link #TYPE_POLYGON}
+     * @return {@link #TYPE_CIRCLE}, {@link #TYPE_POLYGON} or {@link #TYPE_MULTI}
      */
     public abstract int getType();
 
@@ -313,6 +328,11 @@ public abstract class Shape {
     public float getBoundingRadius() {
         return boundingRadius;
     }
+
+    /**
+     * A copy moved by (dx, dy) in the local frame, with the same mass and material.
+     */
+    abstract Shape translated(float dx, float dy);
 
     /** Copies mass, friction and elasticity from another shape. */
     void copyMaterial(Shape other) {

@@ -15,22 +15,26 @@ final class ShapeGeometry {
     final float boundingRadius;
     /** A polygon's cleaned counter-clockwise coordinates x0, y0, x1, ...; null for a circle. */
     final float[] vertices;
+    /** The mass the shape starts with. */
+    final float mass;
 
     private ShapeGeometry(float area, float centroidX, float centroidY, float unitInertia,
-            float boundingRadius, float[] vertices) {
+            float boundingRadius, float[] vertices, float mass) {
         this.area = area;
         this.centroidX = centroidX;
         this.centroidY = centroidY;
         this.unitInertia = unitInertia;
         this.boundingRadius = boundingRadius;
         this.vertices = vertices;
+        this.mass = mass;
     }
 
     /** A disc; the caller has validated the arguments. */
     static ShapeGeometry ofCircle(float radius, float centerX, float centerY) {
         float offset2 = centerX * centerX + centerY * centerY;
         return new ShapeGeometry(EMath.PI * radius * radius, centerX, centerY,
-                0.5f * radius * radius + offset2, EMath.sqrt(offset2) + radius, null);
+                0.5f * radius * radius + offset2, EMath.sqrt(offset2) + radius, null,
+                Shape.DEFAULT_MASS);
     }
 
     /**
@@ -81,6 +85,29 @@ final class ShapeGeometry {
         float centroidY = ry + cy;
         float jOrigin = jCentroid + area * (centroidX * centroidX + centroidY * centroidY);
         return new ShapeGeometry(area, centroidX, centroidY, jOrigin / area, EMath.sqrt(maxR2),
-                xy);
+                xy, Shape.DEFAULT_MASS);
+    }
+
+    /**
+     * A compound of parts placed in one frame: the masses add up, the centre of mass is the
+     * mass-weighted mean of the parts' centroids and the inertia about the origin is the sum of
+     * the parts' inertias about the origin (each already holds its parallel-axis term).
+     */
+    static ShapeGeometry ofParts(Shape[] parts) {
+        float area = 0f;
+        float mass = 0f;
+        float mx = 0f;
+        float my = 0f;
+        float inertia = 0f;
+        float radius = 0f;
+        for (Shape p : parts) {
+            area += p.getArea();
+            mass += p.getMass();
+            mx += p.getMass() * p.getCentroidX();
+            my += p.getMass() * p.getCentroidY();
+            inertia += p.getInertia();
+            radius = Math.max(radius, p.getBoundingRadius());
+        }
+        return new ShapeGeometry(area, mx / mass, my / mass, inertia / mass, radius, null, mass);
     }
 }

@@ -1,7 +1,8 @@
 /**
- * Collision shapes: {@link org.emini.shape.Circle circles} and convex
- * {@link org.emini.shape.Polygon polygons} of up to 12 vertices, with their material (friction,
- * elasticity) and mass.
+ * Collision shapes: {@link org.emini.shape.Circle circles}, convex
+ * {@link org.emini.shape.Polygon polygons} of up to 12 vertices, and
+ * {@link org.emini.shape.MultiShape multi-shapes} made of several of them (which may be concave),
+ * with their material (friction, elasticity) and mass.
  *
  * <p>A shape is described in its local frame, whose origin is the position and centre of rotation
  * of every body that uses it. Shapes carry mass rather than density (as in the original engine);

@@ -50,4 +50,18 @@ class DeterminismTest {
         }
         assertEquals(hash(a), hash(b));
     }
+
+    @Test
+    void landscapeMultiShapesAndAMovingAreaAreBitIdenticalToo() {
+        World a = Terrain.rain(3000, 120, 1000f, 9);
+        World b = Terrain.rain(3000, 120, 1000f, 9);
+        for (int t = 0; t < 300; t++) {
+            float x = -1200f + 8f * t;
+            a.setSimulationArea(x, -1000f, x + 800f, 1000f);
+            b.setSimulationArea(x, -1000f, x + 800f, 1000f);
+            a.tick();
+            b.tick();
+        }
+        assertEquals(hash(a), hash(b));
+    }
 }

@@ -1,0 +1,133 @@
+package org.emini.dynamics;
+
+import org.emini.collision.BroadPhase;
+import org.emini.collision.QueryCallback;
+
+/**
+ * The world's simulation area and the bodies it simulates this tick.
+ *
+ * <p>Without an area every dynamic body is simulated. With one, the simulated bodies are the
+ * dynamic bodies whose bounding box overlaps the area, found by querying the broadphase with the
+ * area, so the cost follows the bodies inside rather than all bodies. The others are frozen: not
+ * integrated, not moved in the broadphase, not collided with each other or the landscape, and
+ * seen by the solver as static (index 0), so bodies inside rest on them rather than fall into them.
+ * Their velocity is kept for when the area comes back to them.
+ */
+final class SimulationArea implements QueryCallback {
+    private boolean bounded;
+    private float minX;
+    private float minY;
+    private float maxX;
+    private float maxY;
+
+    /** The bodies simulated this tick, in world order. */
+    Body[] bodies = new Body[16];
+    int count;
+    private Body[] previous = new Body[16];
+    private int previousCount;
+    private int[] keys = new int[16];
+    private int keyCount;
+
+    private World world;
+    private BroadPhase broadPhase;
+    private final float[] box = new float[4];
+
+    void set(float minX, float minY, float maxX, float maxY) {
+        this.minX = minX;
+        this.minY = minY;
+        this.maxX = maxX;
+        this.maxY = maxY;
+        bounded = true;
+    }
+
+    void clear() {
+        bounded = false;
+    }
+
+    boolean isBounded() {
+        return bounded;
+    }
+
+    float minX() {
+        return minX;
+    }
+
+    float minY() {
+        return minY;
+    }
+
+    float maxX() {
+        return maxX;
+    }
+
+    float maxY() {
+        return maxY;
+    }
+
+    /**
+     * Finds this tick's simulated bodies. Bodies that were simulated last tick lose their solver
+     * index and their awake mark first, so a body that left the area counts as static.
+     */
+    void collect(World w, BroadPhase bp, Body[] all, int allCount) {
+        Body[] t = previous;
+        previous = bodies;
+        bodies = t;
+        previousCount = count;
+        count = 0;
+        for (int i = 0; i < previousCount; i++) {
+            Body b = previous[i];
+            b.awake = false;
+            b.solverIndex = 0;
+            previous[i] = null;
+        }
+        if (!bounded) {
+            ensure(allCount);
+            for (int i = 0; i < allCount; i++) {
+                if (all[i].isDynamic()) {
+                    bodies[count++] = all[i];
+                }
+            }
+        } else {
+            world = w;
+            broadPhase = bp;
+            keyCount = 0;
+            bp.query(minX, minY, maxX, maxY, this);
+            world = null;
+            broadPhase = null;
+            // World order, so the result does not depend on the tree's shape.
+            IntSort.sort(keys, keyCount);
+            ensure(keyCount);
+            for (int i = 0; i < keyCount; i++) {
+                bodies[count++] = w.getBody(keys[i]);
+            }
+        }
+        for (int i = 0; i < count; i++) {
+            bodies[i].awake = true;
+        }
+    }
+
+    @Override
+    public boolean reportProxy(int proxyId) {
+        Body b = world.bodyInSlot(broadPhase.getUserData(proxyId));
+        if (b == null || !b.isDynamic()) {
+            return true;
+        }
+        // The fat box overlaps; the body counts as inside when its own box does.
+        b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
+        if (box[0] <= maxX && minX <= box[2] && box[1] <= maxY && minY <= box[3]) {
+            if (keyCount == keys.length) {
+                keys = java.util.Arrays.copyOf(keys, 2 * keyCount);
+            }
+            keys[keyCount++] = b.worldIndex;
+        }
+        return true;
+    }
+
+    private void ensure(int n) {
+        if (bodies.length < n) {
+            int c = Math.max(n, 2 * bodies.length);
+            bodies = new Body[c];
+            previous = new Body[c];
+        }
+    }
+}

@@ -1,0 +1,40 @@
+package org.emini.dynamics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * A 10,000-segment landscape carries a rain of bodies: nothing falls through, every body ends up
+ * resting on the terrain, and each body only ever holds contacts with the few segments under it.
+ */
+class LargeLandscapeTest {
+    @Test
+    void tenThousandSegmentTerrainCarriesARainOfBodies() {
+        World world = Terrain.rain(10_000, 150, 1500f, 1);
+        assertEquals(10_000, world.getLandscape().getSegmentCount());
+        Scenes.run(world, 20f);
+        int touching = 0;
+        int maxContacts = 0;
+        Contact[] cs = new Contact[64];
+        for (int i = 0; i < world.getBodyCount(); i++) {
+            Body b = world.getBody(i);
+            assertTrue(b.getY() < Terrain.height(b.getX()), b + " is above the terrain surface at its x");
+            if (b.getShape().getType() != org.emini.shape.Shape.TYPE_CIRCLE) {
+                // Balls may still roll to and fro in a valley: nothing brakes rolling.
+                assertTrue(Math.abs(b.getVelocityX()) + Math.abs(b.getVelocityY()) < 5f, b + " has come to rest");
+            }
+            int n = b.getContacts(cs);
+            maxContacts = Math.max(maxContacts, n);
+            for (int k = 0; k < n; k++) {
+                if (cs[k].isLandscape() && cs[k].isTouching()) {
+                    touching++;
+                    break;
+                }
+            }
+        }
+        assertTrue(touching > 100, touching + " bodies touch the terrain (the rest lie on other bodies)");
+        assertTrue(maxContacts < 40, "a body's contacts stay local: at most " + maxContacts);
+    }
+}
