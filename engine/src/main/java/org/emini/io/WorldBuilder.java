@@ -2,6 +2,7 @@ package org.emini.io;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.util.ArrayList;
 import java.util.List;
 
 import org.emini.dynamics.Body;
@@ -10,6 +11,7 @@ import org.emini.dynamics.World;
 import org.emini.event.Event;
 import org.emini.math.EMath;
 import org.emini.particle.ParticleEmitter;
+import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
 
 /**
@@ -30,13 +32,15 @@ import org.emini.shape.Shape;
  * <li>Events with their filters and targets in the engine's units (squared speeds as speeds,
  * angular velocity ranges negated, relative collision directions turned by π); set a listener on
  * the world to receive them.</li>
+ * <li>Multishapes from the parts built (nested ones flattened), with the default material as in the
+ * original; the landscape's segments as stored with their faces and its material.</li>
  * <li>Particle emitters with every stored setting (emit angles keep their sign), each with its own
  * seed; capacities above {@link #setParticleLimit(int)} are listed rather than allocated.</li>
  * <li>World record: gravity and the two damping fractions. Timestep and iterations keep the
  * engine's defaults (the file stores none).</li>
  * </ul>
- * Records whose engine feature is not available (multishapes, landscape segments, scripts),
- * records the engine refuses and unusable records are listed in
+ * Records whose engine feature is not available (scripts and their rows), records the engine
+ * refuses and unusable records are listed in
  * {@link BuildResult#getUnsupported()}; records built differently from the original in
  * {@link BuildResult#getApproximations()}. Nothing is dropped silently.
  */
@@ -131,7 +135,7 @@ public final class WorldBuilder {
             // Multishapes exist only from version 9, which always stores their string.
             userData(r, s, s.isMultiShape() || shapeData, UserData.TYPE_SHAPE);
             if (s.isMultiShape()) {
-                r.unsupported(UnsupportedElement.Kind.MULTI_SHAPE, i, "the engine has no multishapes yet");
+                r.setShape(i, buildMultiShape((PhyMultiShape) s, i, r));
             } else {
                 r.setShape(i, buildShape((PhyShape) s, i, r));
             }
@@ -142,10 +146,7 @@ public final class WorldBuilder {
             buildBody(bodies.get(i), i, r);
         }
         if (document.getLandscape() != null) {
-            List<PhySegment> segments = document.getLandscape().getSegments();
-            for (int i = 0; i < segments.size(); i++) {
-                r.unsupported(UnsupportedElement.Kind.LANDSCAPE_SEGMENT, i, "the engine has no landscape yet");
-            }
+            world.setLandscape(LandscapeMapping.build(document.getLandscape(), r));
         }
         List<PhyConstraint> constraints = document.getConstraints();
         for (int i = 0; i < constraints.size(); i++) {
@@ -184,6 +185,35 @@ public final class WorldBuilder {
         if (stored && userData != null) {
             r.putUserData(e, userData.createNewUserData(e.getUserData(), type));
         }
+    }
+
+    /**
+     * A multishape of the parts built so far; parts that are multishapes give their own parts (the
+     * engine's parts are circles and polygons). Its material is the shape default, as in the original.
+     */
+    private static Shape buildMultiShape(PhyMultiShape m, int index, BuildResult r) {
+        List<Shape> leaves = new ArrayList<Shape>();
+        for (int p : m.getParts()) {
+            Shape part = r.shapeAt(p);
+            if (part == null) {
+                r.unsupported(UnsupportedElement.Kind.MULTI_SHAPE, index,
+                        BuildResult.missing("part", p, r.getDocument().getShapes().size()));
+                return null;
+            }
+            if (part instanceof MultiShape) {
+                MultiShape inner = (MultiShape) part;
+                for (int k = 0; k < inner.getShapeCount(); k++) {
+                    leaves.add(inner.getShape(k));
+                }
+            } else {
+                leaves.add(part);
+            }
+        }
+        if (leaves.isEmpty()) {
+            r.unsupported(UnsupportedElement.Kind.MULTI_SHAPE, index, "a multishape without parts");
+            return null;
+        }
+        return new MultiShape(leaves.toArray(new Shape[0]));
     }
 
     private Shape buildShape(PhyShape s, int index, BuildResult r) {

@@ -213,7 +213,8 @@ class ReferenceWorldsTest {
         }
         assertEquals(doc.getBodies().size(), built + r.getUnsupportedCount(UnsupportedElement.Kind.BODY));
         int segments = doc.getLandscape() == null ? 0 : doc.getLandscape().getSegments().size();
-        assertEquals(segments, r.getUnsupportedCount(UnsupportedElement.Kind.LANDSCAPE_SEGMENT));
+        assertEquals(segments, r.getWorld().getLandscape().getSegmentCount()
+                + r.getUnsupportedCount(UnsupportedElement.Kind.LANDSCAPE_SEGMENT));
         int constraints = 0;
         for (int i = 0; i < doc.getConstraints().size(); i++) {
             constraints += r.getConstraint(i) != null ? 1 : 0;
