@@ -10,6 +10,7 @@ import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.World;
 import org.emini.event.Event;
+import org.emini.particle.ParticleEmitter;
 import org.emini.shape.Shape;
 
 /**
@@ -24,6 +25,7 @@ public final class BuildResult {
     private final Body[] bodies;
     private final Constraint[] constraints;
     private final Event[] events;
+    private final ParticleEmitter[] emitters;
     private final Map<PhyElement, Object> userData = new IdentityHashMap<PhyElement, Object>();
     private final List<UnsupportedElement> unsupported = new ArrayList<UnsupportedElement>();
     private final List<UnsupportedElement> approximations = new ArrayList<UnsupportedElement>();
@@ -35,6 +37,7 @@ public final class BuildResult {
         bodies = new Body[document.getBodies().size()];
         constraints = new Constraint[document.getConstraints().size()];
         events = new Event[document.getEvents().size()];
+        emitters = new ParticleEmitter[document.getParticleEmitters().size()];
     }
 
     /**
@@ -94,6 +97,16 @@ public final class BuildResult {
      */
     public Event getEvent(int index) {
         return events[index];
+    }
+
+    /**
+     * The particle emitter built for an emitter record.
+     *
+     * @param index the record's index in {@link PhyWorld#getParticleEmitters()}
+     * @return the emitter, or null when the record is not built (see {@link #getUnsupported()})
+     */
+    public ParticleEmitter getParticleEmitter(int index) {
+        return emitters[index];
     }
 
     /**
@@ -177,6 +190,10 @@ public final class BuildResult {
 
     void setEvent(int index, Event event) {
         events[index] = event;
+    }
+
+    void setParticleEmitter(int index, ParticleEmitter emitter) {
+        emitters[index] = emitter;
     }
 
     void putUserData(PhyElement element, Object data) {

@@ -5,7 +5,7 @@ package org.emini.io;
  * file, each user-data string the file's version stores is handed to
  * {@link #createNewUserData(String, int)} with the kind of record it belongs to, and the returned
  * object is attached to what was built ({@code setUserData} of bodies, sensor bodies and events;
- * shapes and constraints have none) and kept in {@link BuildResult#getUserData(PhyElement)} for
+ * shapes, constraints and emitters have none) and kept in {@link BuildResult#getUserData(PhyElement)} for
  * every record, built or not.
  * The landscape material's string is discarded, as in the original.
  */

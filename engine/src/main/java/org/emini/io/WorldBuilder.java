@@ -2,6 +2,7 @@ package org.emini.io;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.util.ArrayList;
 import java.util.List;
 
 import org.emini.dynamics.Body;
@@ -9,6 +10,8 @@ import org.emini.dynamics.Constraint;
 import org.emini.dynamics.World;
 import org.emini.event.Event;
 import org.emini.math.EMath;
+import org.emini.particle.ParticleEmitter;
+import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
 
 /**
@@ -29,20 +32,30 @@ import org.emini.shape.Shape;
  * <li>Events with their filters and targets in the engine's units (squared speeds as speeds,
  * angular velocity ranges negated, relative collision directions turned by π); set a listener on
  * the world to receive them.</li>
+ * <li>Multishapes from the parts built (nested ones flattened), with the default material as in the
+ * original; the landscape's segments as stored with their faces and its material.</li>
+ * <li>Particle emitters with every stored setting (emit angles keep their sign), each with its own
+ * seed; capacities above {@link #setParticleLimit(int)} are listed rather than allocated.</li>
  * <li>World record: gravity and the two damping fractions. Timestep and iterations keep the
  * engine's defaults (the file stores none).</li>
  * </ul>
- * Records whose engine feature is not available (multishapes, landscape segments, scripts,
- * particle emitters), records the engine refuses and unusable records are listed in
+ * Records whose engine feature is not available (scripts and their rows), records the engine
+ * refuses and unusable records are listed in
  * {@link BuildResult#getUnsupported()}; records built differently from the original in
  * {@link BuildResult#getApproximations()}. Nothing is dropped silently.
  */
 public final class WorldBuilder {
     /** The default thickness of the slab that stands in for a line shape (px). */
     public static final float DEFAULT_LINE_THICKNESS = 1f;
+    /**
+     * The default largest particle-emitter capacity built (2 MiB of particle state): the engine
+     * allocates an emitter's pool at once, and a file may ask for 2³¹ − 1 particles.
+     */
+    public static final int DEFAULT_PARTICLE_LIMIT = 1 << 16;
 
     private UserData userData;
     private float lineThickness = DEFAULT_LINE_THICKNESS;
+    private int particleLimit = DEFAULT_PARTICLE_LIMIT;
 
     /** Creates a builder without a user-data factory. */
     public WorldBuilder() {
@@ -88,6 +101,21 @@ public final class WorldBuilder {
     }
 
     /**
+     * Sets the largest particle-emitter capacity built; emitters asking for more are listed as
+     * unsupported instead of allocating their pools.
+     *
+     * @param particles the limit, &gt; 0
+     * @return this builder
+     */
+    public WorldBuilder setParticleLimit(int particles) {
+        if (particles <= 0) {
+            throw new IllegalArgumentException("WorldBuilder.setParticleLimit: particles must be > 0, was " + particles);
+        }
+        particleLimit = particles;
+        return this;
+    }
+
+    /**
      * Builds a new world from a document. The document is not changed. The user-data factory is
      * called for each stored string, by kind in this order: shapes, bodies, constraints, events
      * (each followed by its sensor body), particle emitters, the world record.
@@ -107,7 +135,7 @@ public final class WorldBuilder {
             // Multishapes exist only from version 9, which always stores their string.
             userData(r, s, s.isMultiShape() || shapeData, UserData.TYPE_SHAPE);
             if (s.isMultiShape()) {
-                r.unsupported(UnsupportedElement.Kind.MULTI_SHAPE, i, "the engine has no multishapes yet");
+                r.setShape(i, buildMultiShape((PhyMultiShape) s, i, r));
             } else {
                 r.setShape(i, buildShape((PhyShape) s, i, r));
             }
@@ -118,10 +146,7 @@ public final class WorldBuilder {
             buildBody(bodies.get(i), i, r);
         }
         if (document.getLandscape() != null) {
-            List<PhySegment> segments = document.getLandscape().getSegments();
-            for (int i = 0; i < segments.size(); i++) {
-                r.unsupported(UnsupportedElement.Kind.LANDSCAPE_SEGMENT, i, "the engine has no landscape yet");
-            }
+            world.setLandscape(LandscapeMapping.build(document.getLandscape(), r));
         }
         List<PhyConstraint> constraints = document.getConstraints();
         for (int i = 0; i < constraints.size(); i++) {
@@ -143,7 +168,11 @@ public final class WorldBuilder {
         }
         for (int i = 0; i < document.getParticleEmitters().size(); i++) {
             userData(r, document.getParticleEmitters().get(i), otherData, UserData.TYPE_PARTICLE);
-            r.unsupported(UnsupportedElement.Kind.PARTICLE_EMITTER, i, "the engine has no particles yet");
+            ParticleEmitter e = ParticleMapping.build(document.getParticleEmitters().get(i), i, r, particleLimit);
+            if (e != null) {
+                world.addParticleEmitter(e);
+                r.setParticleEmitter(i, e);
+            }
         }
         if (document.getSettings() != null) {
             userData(r, document.getSettings(), otherData, UserData.TYPE_WORLD);
@@ -156,6 +185,35 @@ public final class WorldBuilder {
         if (stored && userData != null) {
             r.putUserData(e, userData.createNewUserData(e.getUserData(), type));
         }
+    }
+
+    /**
+     * A multishape of the parts built so far; parts that are multishapes give their own parts (the
+     * engine's parts are circles and polygons). Its material is the shape default, as in the original.
+     */
+    private static Shape buildMultiShape(PhyMultiShape m, int index, BuildResult r) {
+        List<Shape> leaves = new ArrayList<Shape>();
+        for (int p : m.getParts()) {
+            Shape part = r.shapeAt(p);
+            if (part == null) {
+                r.unsupported(UnsupportedElement.Kind.MULTI_SHAPE, index,
+                        BuildResult.missing("part", p, r.getDocument().getShapes().size()));
+                return null;
+            }
+            if (part instanceof MultiShape) {
+                MultiShape inner = (MultiShape) part;
+                for (int k = 0; k < inner.getShapeCount(); k++) {
+                    leaves.add(inner.getShape(k));
+                }
+            } else {
+                leaves.add(part);
+            }
+        }
+        if (leaves.isEmpty()) {
+            r.unsupported(UnsupportedElement.Kind.MULTI_SHAPE, index, "a multishape without parts");
+            return null;
+        }
+        return new MultiShape(leaves.toArray(new Shape[0]));
     }
 
     private Shape buildShape(PhyShape s, int index, BuildResult r) {
@@ -206,7 +264,7 @@ public final class WorldBuilder {
     }
 
     /** A factor the engine takes in [0, 1] (materials, damping): clamped, and noted when it was not. */
-    private static float unit(float value, UnsupportedElement.Kind kind, int index, String what, BuildResult r) {
+    static float unit(float value, UnsupportedElement.Kind kind, int index, String what, BuildResult r) {
         if (value >= 0f && value <= 1f) {
             return value;
         }
