@@ -22,6 +22,7 @@ import time
 from pathlib import Path
 
 PYMUNK_ITERATIONS = 10  # Chipmunk's default
+pymunk = None  # imported in main, from the oracle's environment
 
 
 def poses(built, names):
@@ -123,7 +124,7 @@ def measure(loader, build, root, scene_id, args):
                 usPerBody=cpu * 1e3 / max(1, dynamic), allocBytesPerTick=None, threadBytesPerTick=None,
                 prerollMsPerTick=(t1 - t0) * 1e3 / preroll if preroll else None,
                 settings=f"px units via the oracle's builder (oracle-py/); timestep {h:g} s; "
-                         f"{PYMUNK_ITERATIONS} iterations (Chipmunk's default); sleeping off; pymunk {built.settings.get('pymunk', '')}".strip(),
+                         f"{PYMUNK_ITERATIONS} iterations (Chipmunk's default); sleeping off; pymunk {pymunk.version}, Chipmunk {pymunk.chipmunk_version}",
                 check=check, afterRun=judge(scene, ticks, initial, poses(built, names)))
 
 
@@ -140,6 +141,8 @@ def main(argv=None):
     sys.path.insert(0, str(args.root / "oracle-py" / "src"))
     from emini_oracle import scene as scene_mod
     from emini_oracle.build import build
+    global pymunk
+    import pymunk
     loader = scene_mod.Loader(args.root / "scenarios" / "scenario.schema.json")
     out = []
     for s in args.scenes:
