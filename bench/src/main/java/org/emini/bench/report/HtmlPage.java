@@ -191,7 +191,8 @@ public final class HtmlPage {
             .append(num(c.get("ticks"), "%.0f")).append(" ticks: dx ").append(num(c.get("maxDxPx"), "%.1f")).append(" px, dy ")
             .append(num(c.get("maxDyPx"), "%.1f")).append(" px, angle ").append(num(c.get("maxAngle"), "%.3f")).append(" rad");
         Object esc = c.get("escaped");
-        if (esc instanceof Number && ((Number) esc).intValue() > 0) {
+        if (esc instanceof Number && ((Number) esc).intValue() > 0 && !(c.get("maxJointErrorPx") instanceof Number
+                && ((Number) c.get("maxJointErrorPx")).doubleValue() > 0)) {
             s.append(", escaped ").append(num(esc, "%.0f"));
         }
         Object je = c.get("maxJointErrorPx");
