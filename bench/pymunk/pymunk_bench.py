@@ -22,6 +22,7 @@ import time
 from pathlib import Path
 
 PYMUNK_ITERATIONS = 10  # Chipmunk's default
+pymunk = None  # imported in main, from the oracle's environment
 
 
 def poses(built, names):
@@ -60,8 +61,32 @@ def judge(scene, ticks, initial, now):
         max_v = max(max_v, v)
         if min_x <= max_x and (x < min_x or x > max_x or y > floor_top):
             escaped += 1
-    if non_finite:
+    joint_error = 0.0
+    joints = scene.elements.get("joints") or []
+    if joints:
+        index = {b.name: i for i, b in enumerate(scene.bodies)}
+
+        def local(p, wx, wy):
+            c, s = math.cos(p[2]), math.sin(p[2])
+            dx, dy = wx - p[0], wy - p[1]
+            return (c * dx + s * dy, -s * dx + c * dy)
+
+        def world(p, l):
+            c, s = math.cos(p[2]), math.sin(p[2])
+            return (p[0] + c * l[0] - s * l[1], p[1] + s * l[0] + c * l[1])
+
+        for j in joints:
+            a, b = index[j["bodyA"]], index[j["bodyB"]]
+            if "at" in j:
+                la, lb = local(initial[a], *j["at"]), local(initial[b], *j["at"])
+            else:
+                la, lb = tuple(j.get("anchorA", (0, 0))), tuple(j.get("anchorB", (0, 0)))
+            pa, pb = world(now[a], la), world(now[b], lb)
+            joint_error = max(joint_error, math.hypot(pa[0] - pb[0], pa[1] - pb[1]))
+    if non_finite or math.isnan(joint_error):
         verdict = "non-finite"
+    elif joints:
+        verdict = "stable" if joint_error <= size / 4 else "stretched"
     elif stacking:
         if max_dx <= size / 4 and max_a < 0.1 and max_dy <= size:
             verdict = "stable"
@@ -72,7 +97,8 @@ def judge(scene, ticks, initial, now):
     else:
         verdict = "stable" if escaped == 0 else "escaped"
     return {"ticks": ticks, "verdict": verdict, "maxDisplacementPx": max_d, "maxDxPx": max_dx, "maxDyPx": max_dy,
-            "bodySize": size, "maxAngle": max_a, "maxSpeed": max_v, "escaped": escaped, "nonFinite": non_finite}
+            "bodySize": size, "maxAngle": max_a, "maxSpeed": max_v, "escaped": escaped, "nonFinite": non_finite,
+            "maxJointErrorPx": joint_error}
 
 
 def measure(loader, build, root, scene_id, args):
@@ -84,8 +110,9 @@ def measure(loader, build, root, scene_id, args):
     if path is None:
         return dict(entry, status="error", message="no scene file")
     scene = loader.load(path)
-    if scene.elements:
-        return dict(entry, status="unsupported", message="the benchmark does not build " + ", ".join(scene.elements))
+    missing = [e for e in scene.elements if e != "joints"]  # the oracle builds joints as pymunk PivotJoints
+    if missing:
+        return dict(entry, status="unsupported", message="the benchmark does not build " + ", ".join(missing))
     built = build(scene)
     space = built.space
     space.iterations = PYMUNK_ITERATIONS
@@ -123,7 +150,7 @@ def measure(loader, build, root, scene_id, args):
                 usPerBody=cpu * 1e3 / max(1, dynamic), allocBytesPerTick=None, threadBytesPerTick=None,
                 prerollMsPerTick=(t1 - t0) * 1e3 / preroll if preroll else None,
                 settings=f"px units via the oracle's builder (oracle-py/); timestep {h:g} s; "
-                         f"{PYMUNK_ITERATIONS} iterations (Chipmunk's default); sleeping off; pymunk {built.settings.get('pymunk', '')}".strip(),
+                         f"{PYMUNK_ITERATIONS} iterations (Chipmunk's default); sleeping off; pymunk {pymunk.version}, Chipmunk {pymunk.chipmunk_version}",
                 check=check, afterRun=judge(scene, ticks, initial, poses(built, names)))
 
 
@@ -140,6 +167,8 @@ def main(argv=None):
     sys.path.insert(0, str(args.root / "oracle-py" / "src"))
     from emini_oracle import scene as scene_mod
     from emini_oracle.build import build
+    global pymunk
+    import pymunk
     loader = scene_mod.Loader(args.root / "scenarios" / "scenario.schema.json")
     out = []
     for s in args.scenes:

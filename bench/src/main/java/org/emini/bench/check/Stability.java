@@ -15,7 +15,9 @@ import org.emini.harness.scenario.Scenario;
  * 0.1 rad and moved less than b vertically; {@code collapsed} when a body moved more than b sideways
  * or 2b vertically, or turned more than 0.5 rad; {@code drifted} in between. Other scenes (rain into a container):
  * {@code stable} when no body left the container (outside the static bodies' horizontal extent or
- * below the top of the lowest static body) and every pose is finite, else {@code escaped}.
+ * below the top of the lowest static body) and every pose is finite, else {@code escaped}. Scenes
+ * with joints: each joint's anchor is fixed in both bodies at the start; {@code stable} while the two
+ * anchors stay within b/4 of each other, else {@code stretched}.
  *
  * @param ticks ticks run before the check
  * @param verdict stable, drifted, collapsed, escaped or non-finite
@@ -27,9 +29,11 @@ import org.emini.harness.scenario.Scenario;
  * @param maxSpeed largest speed of a dynamic body at the check (px/s)
  * @param escaped dynamic bodies outside the container
  * @param nonFinite dynamic bodies with a non-finite pose
+ * @param maxJointErrorPx largest distance between the two anchors of a joint (px), 0 without joints
  */
 public record Stability(long ticks, String verdict, double maxDisplacementPx, double maxDxPx, double maxDyPx, double bodySize,
-                        double maxAngle, double maxSpeed, int escaped, int nonFinite) {
+                        double maxAngle, double maxSpeed, int escaped, int nonFinite,
+                        double maxJointErrorPx) {
 
     /**
      * Judges poses.
@@ -77,9 +81,12 @@ public record Stability(long ticks, String verdict, double maxDisplacementPx, do
                 escaped++;
             }
         }
+        double jointError = jointError(s, initial, now);
         String verdict;
-        if (nonFinite > 0) {
+        if (nonFinite > 0 || Double.isNaN(jointError)) {
             verdict = "non-finite";
+        } else if (s.elements().containsKey("joints")) {
+            verdict = jointError <= size / 4 ? "stable" : "stretched";
         } else if (stacking) {
             if (maxDx <= size / 4 && maxA < 0.1 && maxDy <= size) {
                 verdict = "stable";
@@ -91,6 +98,55 @@ public record Stability(long ticks, String verdict, double maxDisplacementPx, do
         } else {
             verdict = escaped == 0 ? "stable" : "escaped";
         }
-        return new Stability(ticks, verdict, maxD, maxDx, maxDy, size, maxA, maxV, escaped, nonFinite);
+        return new Stability(ticks, verdict, maxD, maxDx, maxDy, size, maxA, maxV, escaped, nonFinite, jointError);
+    }
+
+    /** The largest anchor separation over the scene's joints (px); NaN if a pose is not finite. */
+    private static double jointError(Scenario s, double[] initial, double[] now) {
+        if (!s.elements().containsKey("joints")) {
+            return 0;
+        }
+        java.util.Map<String, Integer> index = new java.util.HashMap<>();
+        for (int i = 0; i < s.bodies().size(); i++) {
+            index.put(s.bodies().get(i).name(), i);
+        }
+        double worst = 0;
+        for (com.fasterxml.jackson.databind.JsonNode j : s.elements().get("joints").node()) {
+            int a = index.get(j.get("bodyA").asText());
+            int b = index.get(j.get("bodyB").asText());
+            double[] la;
+            double[] lb;
+            if (j.has("at")) {
+                double wx = j.get("at").get(0).asDouble(), wy = j.get("at").get(1).asDouble();
+                la = toLocal(initial, a, wx, wy);
+                lb = toLocal(initial, b, wx, wy);
+            } else {
+                la = anchor(j.path("anchorA"));
+                lb = anchor(j.path("anchorB"));
+            }
+            double[] pa = toWorld(now, a, la);
+            double[] pb = toWorld(now, b, lb);
+            double d = Math.hypot(pa[0] - pb[0], pa[1] - pb[1]);
+            if (Double.isNaN(d)) {
+                return Double.NaN;
+            }
+            worst = Math.max(worst, d);
+        }
+        return worst;
+    }
+
+    private static double[] anchor(com.fasterxml.jackson.databind.JsonNode n) {
+        return n.isArray() ? new double[] {n.get(0).asDouble(), n.get(1).asDouble()} : new double[] {0, 0};
+    }
+
+    private static double[] toLocal(double[] poses, int i, double wx, double wy) {
+        double c = Math.cos(poses[3 * i + 2]), sn = Math.sin(poses[3 * i + 2]);
+        double dx = wx - poses[3 * i], dy = wy - poses[3 * i + 1];
+        return new double[] {c * dx + sn * dy, -sn * dx + c * dy};
+    }
+
+    private static double[] toWorld(double[] poses, int i, double[] l) {
+        double c = Math.cos(poses[3 * i + 2]), sn = Math.sin(poses[3 * i + 2]);
+        return new double[] {poses[3 * i] + c * l[0] - sn * l[1], poses[3 * i + 1] + sn * l[0] + c * l[1]};
     }
 }

@@ -64,6 +64,14 @@ final class Dyn4jEngine implements BenchEngine {
             world.addBody(b);
             bodies[i++] = b;
         }
+        for (PeerScene.PeerJoint pj : scene.joints) {
+            Vector2 at = new Vector2(pj.x, pj.y);
+            org.dyn4j.dynamics.joint.Joint<Body> j = pj.fixed
+                ? new org.dyn4j.dynamics.joint.WeldJoint<>(bodies[pj.a], bodies[pj.b], at)
+                : new org.dyn4j.dynamics.joint.RevoluteJoint<>(bodies[pj.a], bodies[pj.b], at);
+            j.setCollisionAllowed(pj.collide);
+            world.addJoint(j);
+        }
     }
 
     @Override

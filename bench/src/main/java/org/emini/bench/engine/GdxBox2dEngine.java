@@ -57,6 +57,19 @@ final class GdxBox2dEngine implements BenchEngine {
             shape.dispose();
             bodies[i++] = b;
         }
+        for (PeerScene.PeerJoint pj : scene.joints) {
+            if (pj.fixed) {
+                com.badlogic.gdx.physics.box2d.joints.WeldJointDef d = new com.badlogic.gdx.physics.box2d.joints.WeldJointDef();
+                d.initialize(bodies[pj.a], bodies[pj.b], new Vector2((float) pj.x, (float) pj.y));
+                d.collideConnected = pj.collide;
+                world.createJoint(d);
+            } else {
+                com.badlogic.gdx.physics.box2d.joints.RevoluteJointDef d = new com.badlogic.gdx.physics.box2d.joints.RevoluteJointDef();
+                d.initialize(bodies[pj.a], bodies[pj.b], new Vector2((float) pj.x, (float) pj.y));
+                d.collideConnected = pj.collide;
+                world.createJoint(d);
+            }
+        }
     }
 
     private static Shape shape(PeerScene.PeerShape sh) {

@@ -59,6 +59,19 @@ final class JBox2dEngine implements BenchEngine {
             b.createFixture(fd);
             bodies[i++] = b;
         }
+        for (PeerScene.PeerJoint pj : scene.joints) {
+            if (pj.fixed) {
+                org.jbox2d.dynamics.joints.WeldJointDef d = new org.jbox2d.dynamics.joints.WeldJointDef();
+                d.initialize(bodies[pj.a], bodies[pj.b], new Vec2((float) pj.x, (float) pj.y));
+                d.collideConnected = pj.collide;
+                world.createJoint(d);
+            } else {
+                org.jbox2d.dynamics.joints.RevoluteJointDef d = new org.jbox2d.dynamics.joints.RevoluteJointDef();
+                d.initialize(bodies[pj.a], bodies[pj.b], new Vec2((float) pj.x, (float) pj.y));
+                d.collideConnected = pj.collide;
+                world.createJoint(d);
+            }
+        }
     }
 
     private static Shape shape(PeerScene.PeerShape sh) {

@@ -28,6 +28,29 @@ final class PeerScene {
     final double gravityX;
     final double gravityY;
     final List<PeerBody> bodies = new ArrayList<>();
+    final List<PeerJoint> joints = new ArrayList<>();
+
+    /**
+     * A pin joint (revolute) or, when fixed, a weld, at one world point (m, y up) of the start pose.
+     * Bodies are indices into {@link #bodies}.
+     */
+    static final class PeerJoint {
+        final int a;
+        final int b;
+        final double x;
+        final double y;
+        final boolean fixed;
+        final boolean collide;
+
+        PeerJoint(int a, int b, double x, double y, boolean fixed, boolean collide) {
+            this.a = a;
+            this.b = b;
+            this.x = x;
+            this.y = y;
+            this.fixed = fixed;
+            this.collide = collide;
+        }
+    }
 
     /** A shape in metres (y up): a circle, or a convex polygon with counter-clockwise vertices. */
     static final class PeerShape {
@@ -96,8 +119,10 @@ final class PeerScene {
      * @param maxVertices the engine's polygon vertex limit
      */
     static PeerScene of(Scenario s, String engine, int maxVertices) throws UnsupportedSceneException {
-        if (!s.elements().isEmpty()) {
-            throw new UnsupportedSceneException("the " + engine + " adapter does not build " + s.elements().keySet() + " yet");
+        for (String element : s.elements().keySet()) {
+            if (!"joints".equals(element)) {
+                throw new UnsupportedSceneException("the " + engine + " adapter does not build " + element + " yet");
+            }
         }
         if (!s.actions().isEmpty()) {
             throw new UnsupportedSceneException("the " + engine + " adapter does not play actions");
@@ -118,6 +143,31 @@ final class PeerScene {
                 shapes.put(b.shape(), shape);
             }
             p.bodies.add(new PeerBody(b.name(), shape, b));
+        }
+        if (s.elements().containsKey("joints")) {
+            java.util.Map<String, Integer> index = new java.util.HashMap<>();
+            for (int i = 0; i < s.bodies().size(); i++) {
+                index.put(s.bodies().get(i).name(), i);
+            }
+            for (com.fasterxml.jackson.databind.JsonNode j : s.elements().get("joints").node()) {
+                int a = index.get(j.get("bodyA").asText());
+                int b = index.get(j.get("bodyB").asText());
+                double wx, wy;
+                if (j.has("at")) {
+                    wx = j.get("at").get(0).asDouble();
+                    wy = j.get("at").get(1).asDouble();
+                } else {
+                    // A's local anchor placed by A's start pose (B's anchor coincides for a pin joint).
+                    BodySpec ba = s.bodies().get(a);
+                    com.fasterxml.jackson.databind.JsonNode la = j.path("anchorA");
+                    double lx = la.isArray() ? la.get(0).asDouble() : 0, ly = la.isArray() ? la.get(1).asDouble() : 0;
+                    double c = Math.cos(ba.state().angle()), sn = Math.sin(ba.state().angle());
+                    wx = ba.x() + c * lx - sn * ly;
+                    wy = ba.y() + sn * lx + c * ly;
+                }
+                p.joints.add(new PeerJoint(a, b, wx / PX_PER_M, -wy / PX_PER_M, j.path("fixed").asBoolean(false),
+                    j.path("collide").asBoolean(false)));
+            }
         }
         return p;
     }

@@ -122,7 +122,10 @@ public final class MarkdownTables {
         }
         StringBuilder s = new StringBuilder(String.valueOf(c.get("verdict"))).append(String.format(Locale.ROOT,
             " (%.0f ticks; dx %.1f, dy %.1f px, %.3f rad", num(c.get("ticks")), num(c.get("maxDxPx")), num(c.get("maxDyPx")), num(c.get("maxAngle"))));
-        if (num(c.get("escaped")) > 0) {
+        if (num(c.get("maxJointErrorPx")) > 0) {
+            s.append(String.format(Locale.ROOT, ", joint error %.1f px", num(c.get("maxJointErrorPx"))));
+        }
+        if (num(c.get("escaped")) > 0 && !(num(c.get("maxJointErrorPx")) > 0)) {
             s.append(String.format(Locale.ROOT, ", %.0f escaped", num(c.get("escaped"))));
         }
         return s.append(')').toString();
