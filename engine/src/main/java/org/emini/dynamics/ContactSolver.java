@@ -15,7 +15,8 @@ import static org.emini.dynamics.SolverBodies.W;
  * Soft-step contact constraints: the design of Box2D v3 (Catto's "solver2d" study), on flat arrays.
  *
  * <p>Per substep: warm start, one biased solve with soft (spring-damper) contacts, position
- * integration, one unbiased relax pass. Contacts are not re-collided per substep; their separation is
+ * integration, one unbiased relax pass (then more, over the contacts of bodies an impact moved:
+ * {@link #relaxHot}). Contacts are not re-collided per substep; their separation is
  * updated from the bodies' motion since the tick started. After the substeps a restitution pass
  * restores the bounce. The relax pass removes the velocity the push-out created, so overlap is
  * resolved without adding energy.
@@ -51,6 +52,8 @@ final class ContactSolver {
     private static final int TIMP = 8;
     private static final int MAXIMP = 9;
     private static final int RELVEL = 10;
+    // Inverse effective normal mass (1 / NMASS, or 0): impulse to relative speed without a division.
+    private static final int KN = 11;
     private static final int PS = 12;
     static final int CS = P0 + 2 * PS;
     // Per-constraint ints.
@@ -66,6 +69,12 @@ final class ContactSolver {
 
     /** Largest velocity change a relax pass made (px/s); the dynamic-iteration convergence test. */
     float lastRelaxChange;
+
+    // Per solver body: the relax pass that last changed its velocity by more than the hot tolerance.
+    private int[] hot = new int[16];
+    // Relax passes so far; passes are told apart by this number, so stamps never need clearing.
+    private int pass;
+    private boolean anyHot;
 
     int count() {
         return count;
@@ -136,6 +145,7 @@ final class ContactSolver {
                 float rnb = rbx * ny - rby * nx;
                 float kn = mA + mB + iA * rna * rna + iB * rnb * rnb;
                 f[po + NMASS] = kn > 0f ? 1f / kn : 0f;
+                f[po + KN] = kn > 0f ? kn : 0f;
                 // Tangent t = (−ny, nx).
                 float rta = rax * nx + ray * ny;
                 float rtb = rbx * nx + rby * ny;
@@ -276,13 +286,60 @@ final class ContactSolver {
      *     dynamic-iteration test reads it; the division per point it costs is skipped otherwise)
      */
     void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop, boolean trackChange) {
+        solve(bodies, useBias, invH, maxPush, slop, trackChange, false, Float.POSITIVE_INFINITY);
+    }
+
+    /**
+     * Relax passes after the substep's first one, each over the contacts of the bodies the previous
+     * pass changed by more than {@code tolerance}, until none is or {@code maxPasses} are done.
+     * Gauss–Seidel passes velocity across a mass ratio of r only at about 1/r per pass, so after an
+     * impact a heavy body on a light one keeps the soft pass's push (it bounces although elasticity
+     * is 0); resting contacts change by less than gravity adds per substep and cost nothing here.
+     *
+     * @return the passes made
+     */
+    int relaxHot(SolverBodies bodies, float invH, float maxPush, float slop, float tolerance, int maxPasses) {
+        int made = 0;
+        while (made < maxPasses && anyHot) {
+            solve(bodies, false, invH, maxPush, slop, false, true, tolerance);
+            made++;
+        }
+        return made;
+    }
+
+    /**
+     * Starts a substep's first relax pass, marking the bodies it changes by more than
+     * {@code tolerance} for {@link #relaxHot}.
+     */
+    void relax(SolverBodies bodies, float invH, float maxPush, float slop, boolean trackChange, float tolerance) {
+        solve(bodies, false, invH, maxPush, slop, trackChange, false, tolerance);
+    }
+
+    private void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop, boolean trackChange,
+            boolean hotOnly, float hotTolerance) {
         float[] st = bodies.state;
         float maxChange = 0f;
+        int[] hotStamp = hot;
+        int previous = pass;
+        int current = previous;
+        if (!useBias) {
+            if (hotStamp.length < bodies.count) {
+                hotStamp = new int[Math.max(bodies.count, 2 * hotStamp.length)];
+                hot = hotStamp;
+            }
+            current = ++pass;
+            anyHot = false;
+        }
         for (int k = 0; k < count; k++) {
             int fo = k * CS;
             int io = k * CI;
-            int oa = n[io + BODY_A] * STRIDE;
-            int ob = n[io + BODY_B] * STRIDE;
+            int ia = n[io + BODY_A];
+            int ib = n[io + BODY_B];
+            if (hotOnly && hotStamp[ia] != previous && hotStamp[ib] != previous) {
+                continue;
+            }
+            int oa = ia * STRIDE;
+            int ob = ib * STRIDE;
             float nx = f[fo + NX];
             float ny = f[fo + NY];
             float mA = st[oa + IM];
@@ -361,6 +418,10 @@ final class ContactSolver {
                         }
                         float px = (d1 + d2) * nx;
                         float py = (d1 + d2) * ny;
+                        if (!useBias) {
+                            markHot(ia, ib, Math.max((d1 < 0f ? -d1 : d1) * f[p1 + KN], (d2 < 0f ? -d2 : d2) * f[p2 + KN]),
+                                hotTolerance, current);
+                        }
                         vax -= mA * px;
                         vay -= mA * py;
                         wa -= iA * ((r1ax * ny - r1ay * nx) * d1 + (r2ax * ny - r2ay * nx) * d2);
@@ -414,6 +475,9 @@ final class ContactSolver {
                         maxChange = dv;
                     }
                 }
+                if (!useBias) {
+                    markHot(ia, ib, (d < 0f ? -d : d) * f[po + KN], hotTolerance, current);
+                }
                 float px = d * nx;
                 float py = d * ny;
                 vax -= mA * px;
@@ -463,6 +527,20 @@ final class ContactSolver {
         }
         if (!useBias) {
             lastRelaxChange = maxChange;
+        }
+    }
+
+    /** Marks both bodies for the next hot pass when an impulse changed their relative speed by more than tolerance. */
+    private void markHot(int ia, int ib, float change, float tolerance, int current) {
+        if (change > tolerance) {
+            // Slot 0 is every static body: marking it would make all static contacts hot.
+            if (ia != 0) {
+                hot[ia] = current;
+            }
+            if (ib != 0) {
+                hot[ib] = current;
+            }
+            anyHot = true;
         }
     }
 

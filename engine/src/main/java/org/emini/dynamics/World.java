@@ -892,6 +892,8 @@ public final class World {
         float maxPush = settings.getContactPushMaxVelocity();
         float slop = settings.getLinearSlop();
         float tolerance = settings.getConvergenceTolerance();
+        float impactTolerance = settings.getImpactTolerance();
+        int impactPasses = settings.getImpactRelaxPasses();
         int used = 0;
         float hh = h;
         float change = Float.MAX_VALUE;
@@ -915,7 +917,8 @@ public final class World {
                 for (int c = 0; c < cn; c++) {
                     change = Math.max(change, cs[c].solve(step, false));
                 }
-                contactSolver.solve(sb, false, invH, maxPush, slop, dynamicIterations);
+                contactSolver.relax(sb, invH, maxPush, slop, dynamicIterations, impactTolerance);
+                contactSolver.relaxHot(sb, invH, maxPush, slop, impactTolerance, impactPasses);
                 change = Math.max(change, contactSolver.lastRelaxChange);
                 used++;
                 converged = dynamicIterations && change < tolerance;

@@ -16,7 +16,7 @@ class LargeLandscapeTest {
         assertEquals(10_000, world.getLandscape().getSegmentCount());
         Scenes.run(world, 20f);
         int touching = 0;
-        int maxContacts = 0;
+        int maxSegments = 0;
         Contact[] cs = new Contact[64];
         for (int i = 0; i < world.getBodyCount(); i++) {
             Body b = world.getBody(i);
@@ -26,15 +26,19 @@ class LargeLandscapeTest {
                 assertTrue(Math.abs(b.getVelocityX()) + Math.abs(b.getVelocityY()) < 5f, b + " has come to rest");
             }
             int n = b.getContacts(cs);
-            maxContacts = Math.max(maxContacts, n);
+            int segments = 0;
+            boolean touches = false;
             for (int k = 0; k < n; k++) {
-                if (cs[k].isLandscape() && cs[k].isTouching()) {
-                    touching++;
-                    break;
+                if (cs[k].isLandscape()) {
+                    segments++;
+                    touches |= cs[k].isTouching();
                 }
             }
+            maxSegments = Math.max(maxSegments, segments);
+            touching += touches ? 1 : 0;
         }
         assertTrue(touching > 100, touching + " bodies touch the terrain (the rest lie on other bodies)");
-        assertTrue(maxContacts < 40, "a body's contacts stay local: at most " + maxContacts);
+        // An L of two parts over 4 px segments holds about 16 (one per part and segment near it).
+        assertTrue(maxSegments <= 30, "a body's segment contacts stay local: at most " + maxSegments);
     }
 }

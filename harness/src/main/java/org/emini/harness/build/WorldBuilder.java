@@ -69,6 +69,8 @@ public final class WorldBuilder {
                 case "contactPushMaxVelocity" -> s.setContactPushMaxVelocity(v);
                 case "restitutionThreshold" -> s.setRestitutionThreshold(v);
                 case "convergenceTolerance" -> s.setConvergenceTolerance(v);
+                case "impactTolerance" -> s.setImpactTolerance(v);
+                case "impactRelaxPasses" -> s.setImpactRelaxPasses(Math.round(v));
                 default -> throw new IllegalArgumentException("unknown solver setting " + e.getKey());
             }
         }
