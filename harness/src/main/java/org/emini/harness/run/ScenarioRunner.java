@@ -99,6 +99,30 @@ public final class ScenarioRunner {
         return result(scenario, status, message.toString(), verdicts, stale, ticks, millis(t1 - t0), runMillis, trace);
     }
 
+    /**
+     * Wall seconds of a scene's ticks alone, as a sweep's cost: a freshly built world, then per tick the
+     * scheduled actions and {@code World.tick()}, timed as one block, with no metrics and no samples.
+     * The pymunk oracle times the same loop ({@code emini_oracle.run.time_steps}).
+     *
+     * @throws UnsupportedElementException if the scene uses an element the engine lacks
+     * @throws RuntimeException if the engine refuses the run (a non-finite state)
+     */
+    public static double timeTicks(Scenario scenario) throws UnsupportedElementException {
+        BuiltWorld built = WorldBuilder.build(scenario);
+        World world = built.world();
+        Schedule schedule = new Schedule(built, scenario.actions(), scenario.world().timestep());
+        long ticks = scenario.ticks();
+        boolean actions = !scenario.actions().isEmpty();
+        long t0 = System.nanoTime();
+        for (long k = 0; k < ticks; k++) {
+            if (actions) {
+                schedule.beforeTick(k);
+            }
+            world.tick();
+        }
+        return (System.nanoTime() - t0) / 1e9;
+    }
+
     /** Ticks between samples: the record interval rounded to whole ticks (at least one). */
     public static long samplingTicks(RecordSpec record, double timestep) {
         return Double.isNaN(record.every()) ? 1 : Math.max(1, Math.round(record.every() / timestep));

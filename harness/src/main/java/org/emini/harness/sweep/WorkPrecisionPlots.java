@@ -17,8 +17,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 /**
  * Log-log work-precision plots drawn with XChart as SVG: per scene, error over the whole run against
  * cost, error at the final time against cost and, where the scene conserves energy or momentum, their
- * drift against cost; one line per engine and iteration count, its points the timesteps. Lower left
- * is better. Points that are zero, NaN or unstable cannot be drawn on log axes and are left out.
+ * drift against cost; one line per engine and iteration count, its points the timesteps (Emini solid
+ * with circles, pymunk dashed with diamonds, one colour per iteration count). Lower left is better. Points that are zero, NaN or unstable cannot be drawn on log axes and are left out.
  */
 public final class WorkPrecisionPlots {
     private WorkPrecisionPlots() {
@@ -57,33 +57,62 @@ public final class WorkPrecisionPlots {
         return n;
     }
 
-    private static int plot(List<SweepPoint> points, ToDoubleFunction<SweepPoint> y, String title, String yTitle,
-                            Path stem) throws IOException {
+    /** Colours by iteration count (the same setting has the same colour in both engines). */
+    private static final java.awt.Color[] COLOURS = {new java.awt.Color(0x1f77b4), new java.awt.Color(0xff7f0e),
+        new java.awt.Color(0x2ca02c), new java.awt.Color(0xd62728), new java.awt.Color(0x9467bd),
+        new java.awt.Color(0x8c564b), new java.awt.Color(0xe377c2), new java.awt.Color(0x7f7f7f)};
+
+    /**
+     * The lines of a plot: one per engine and iteration count ("emini, 10 iterations"), its points the
+     * drawable ones (status ok, a positive finite figure and cost), ordered by rate.
+     */
+    static Map<String, List<SweepPoint>> lines(List<SweepPoint> points, ToDoubleFunction<SweepPoint> y) {
         Map<String, List<SweepPoint>> lines = new TreeMap<>();
         for (SweepPoint p : points) {
             double v = y.applyAsDouble(p);
-            if (p.status().equals("ok") && v > 0 && Double.isFinite(v) && p.costSeconds() > 0) {
-                lines.computeIfAbsent(String.format("%s, %2d iterations", p.engine(), p.iterations()), k -> new ArrayList<>()).add(p);
+            if (p.status().equals("ok") && v > 0 && Double.isFinite(v) && p.costSeconds() > 0 && Double.isFinite(p.costSeconds())) {
+                lines.computeIfAbsent(label(p), k -> new ArrayList<>()).add(p);
             }
         }
+        lines.values().forEach(ps -> ps.sort(Comparator.comparingInt(SweepPoint::rate)));
+        return lines;
+    }
+
+    /** A line's name: the engine and the iteration count. */
+    static String label(SweepPoint p) {
+        return String.format("%s, %2d iterations", p.engine(), p.iterations());
+    }
+
+    private static int plot(List<SweepPoint> points, ToDoubleFunction<SweepPoint> y, String title, String yTitle,
+                            Path stem) throws IOException {
+        Map<String, List<SweepPoint>> lines = lines(points, y);
         if (lines.isEmpty()) {
             Files.deleteIfExists(stem.resolveSibling(stem.getFileName() + ".svg"));
             return 0;
         }
-        XYChart chart = new XYChartBuilder().width(640).height(420).title(title)
-                .xAxisTitle("cost: wall seconds per simulated second").yAxisTitle(yTitle).build();
+        List<Integer> iterations = points.stream().map(SweepPoint::iterations).distinct().sorted().toList();
+        XYChart chart = new XYChartBuilder().width(800).height(440).title(title)
+                .xAxisTitle("cost: wall seconds of the ticks per simulated second").yAxisTitle(yTitle).build();
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
-        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideS);
-        chart.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Horizontal);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideE);
+        chart.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Vertical);
         for (Map.Entry<String, List<SweepPoint>> line : lines.entrySet()) {
-            List<SweepPoint> ps = new ArrayList<>(line.getValue());
-            ps.sort(Comparator.comparingInt(SweepPoint::rate));
+            List<SweepPoint> ps = line.getValue();
             double[] xs = ps.stream().mapToDouble(SweepPoint::costSeconds).toArray();
             double[] ys = ps.stream().mapToDouble(y).toArray();
             var s = chart.addSeries(line.getKey(), xs, ys);
-            s.setMarker(line.getKey().startsWith("pymunk") ? SeriesMarkers.DIAMOND : SeriesMarkers.CIRCLE);
+            boolean oracle = !ps.get(0).engine().equals("emini");
+            s.setMarker(oracle ? SeriesMarkers.DIAMOND : SeriesMarkers.CIRCLE);
+            java.awt.Color c = COLOURS[iterations.indexOf(ps.get(0).iterations()) % COLOURS.length];
+            s.setLineColor(c);
+            s.setMarkerColor(c);
+            if (oracle) {
+                // The oracle's lines dashed: the same colour is the same iteration count.
+                s.setLineStyle(new java.awt.BasicStroke(1.6f, java.awt.BasicStroke.CAP_BUTT, java.awt.BasicStroke.JOIN_MITER,
+                        10f, new float[] {6f, 4f}, 0f));
+            }
         }
         VectorGraphicsEncoder.saveVectorGraphic(chart, stem.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
         return 1;
