@@ -59,7 +59,9 @@ def test_the_cost_is_the_ticks_alone_best_of_the_repeats(loader):
     assert 0 < r["stepSeconds"] < r["loopSeconds"], "the metrics (Python) are not part of the cost"
     none = run_variant(loader, {"id": 2, "scene": "p", "text": variant(PROJECTILE, 60), "repeats": 0})
     assert none["stepSeconds"] is None and none["trace"] is not None
-    assert time_steps(loader.load_text("p.yaml", PROJECTILE, "p")) > 0
+    wall, cpu = time_steps(loader.load_text("p.yaml", PROJECTILE, "p"))
+    assert wall > 0 and cpu >= 0
+    assert 0 < r["stepCpuSeconds"] < 10 * r["stepSeconds"]
 
 
 def test_unsupported_and_invalid_variants_say_why(loader):

@@ -169,10 +169,11 @@ def run_scene(scene: Scene, ticks=None, timing=None):
 
 
 def time_steps(scene: Scene):
-    """Wall seconds of a scene's ticks alone: a fresh space, then per tick the scheduled actions,
-    `space.step(h)` and the damping that completes Emini's tick, timed as one block with no metrics,
-    no samples and the garbage collector paused. The harness's engine side times the same loop
-    (EngineBackend: actions and World.tick), so the two costs of a sweep point are alike."""
+    """Time of a scene's ticks alone, (wall seconds, CPU seconds of this thread): a fresh space, then
+    per tick the scheduled actions, `space.step(h)` and the damping that completes Emini's tick, timed
+    as one block with no metrics, no samples and the garbage collector paused. The harness's engine
+    side times the same loop (ScenarioRunner.timeTicks: actions and World.tick), so the two costs of a
+    sweep point are alike."""
     built = build(scene)
     space = built.space
     step = space.step
@@ -186,6 +187,7 @@ def time_steps(scene: Scene):
     collecting = gc.isenabled()
     gc.disable()
     try:
+        c0 = time.thread_time()
         t0 = time.perf_counter()
         if before is None and not damped:
             for _ in range(ticks):
@@ -199,7 +201,8 @@ def time_steps(scene: Scene):
                     b.velocity = b.velocity * keep_lin
                     if rot:
                         b.angular_velocity *= keep_rot
-        return time.perf_counter() - t0
+        t1 = time.perf_counter()
+        return t1 - t0, time.thread_time() - c0
     finally:
         if collecting:
             gc.enable()

@@ -16,8 +16,8 @@ then, for each request line read from stdin,
 it prints one response line
 
     {"id": 7, "scene": "...", "status": "ok" | "unsupported" | "error", "message": "...",
-     "unsupported": [...], "approximations": [...], "stepSeconds": 0.0123, "loopSeconds": 0.05,
-     "runsPerRepeat": 2, "simulatedSeconds": 4.0, "repeats": 3,
+     "unsupported": [...], "approximations": [...], "stepSeconds": 0.0123, "stepCpuSeconds": 0.012,
+     "loopSeconds": 0.05, "runsPerRepeat": 2, "simulatedSeconds": 4.0, "repeats": 3,
      "trace": {trace format v1, source "pymunk"} or null}
 
 and it exits when stdin ends. The same works by hand: `emini-oracle serve < requests.jsonl`.
@@ -27,8 +27,9 @@ once with its metrics, which gives the trace (runs are deterministic) and serves
 then `repeats` times (0: the trace only) with nothing but its ticks (`run.time_steps`: actions,
 `space.step(h)` and the damping that completes Emini's tick, timed as one block, no metrics or
 samples, the garbage collector paused). A repeat of a short scene runs it n times (n doubling until
-the repeat lasts 20 ms, as timeit's autorange) and divides by n. `stepSeconds` is the best repeat; the
-cost of the point is stepSeconds per simulated second. `loopSeconds` is the trace run's tick loop
+the repeat lasts 20 ms, as timeit's autorange) and divides by n. `stepSeconds` is the best repeat's
+wall time (the cost of the point is stepSeconds per simulated second), `stepCpuSeconds` the best
+repeat's CPU time of the thread (not inflated when other processes share the machine). `loopSeconds` is the trace run's tick loop
 with the oracle's metrics (they are Python, so it is several times slower: reported, not used as the
 cost).
 
@@ -58,21 +59,32 @@ MAX_RUNS_PER_REPEAT = 1024
 
 
 def best_time(scene, repeats):
-    """Best wall time of the scene's ticks over `repeats` repeats, each of as many runs n as make it
-    last MIN_REPEAT_SECONDS (n doubles from 1; the runs that find n are warm-up, the last of them is
-    the first repeat). Returns (seconds per run, n); (inf, 0) without repeats."""
+    """Best time of the scene's ticks over `repeats` repeats, each of as many runs n as make it last
+    MIN_REPEAT_SECONDS of wall time (n doubles from 1; the runs that find n are warm-up, the last of
+    them is the first repeat), divided by n. Returns (wall seconds per run, CPU seconds per run, n);
+    (inf, inf, 0) without repeats."""
     if repeats <= 0:
-        return math.inf, 0
+        return math.inf, math.inf, 0
+
+    def repeat(n):
+        wall = cpu = 0.0
+        for _ in range(n):
+            w, c = time_steps(scene)
+            wall += w
+            cpu += c
+        return wall, cpu
+
     n = 1
     while True:
-        total = sum(time_steps(scene) for _ in range(n))
-        if total >= MIN_REPEAT_SECONDS or n >= MAX_RUNS_PER_REPEAT:
+        wall, cpu = repeat(n)
+        if wall >= MIN_REPEAT_SECONDS or n >= MAX_RUNS_PER_REPEAT:
             break
         n *= 2
-    best = total / n
+    best_wall, best_cpu = wall / n, cpu / n
     for _ in range(repeats - 1):
-        best = min(best, sum(time_steps(scene) for _ in range(n)) / n)
-    return best, n
+        wall, cpu = repeat(n)
+        best_wall, best_cpu = min(best_wall, wall / n), min(best_cpu, cpu / n)
+    return best_wall, best_cpu, n
 
 
 def run_variant(loader, request):
@@ -99,7 +111,7 @@ def run_variant(loader, request):
         timing = {}
         doc, _built = run_scene(scene, timing=timing)
         moving = [n for n in doc["unsupported"] if n["affectsBodies"]]
-        best_steps, runs = (best_time(scene, repeats) if not moving else (math.inf, 0))
+        best_steps, best_cpu, runs = best_time(scene, repeats) if not moving else (math.inf, math.inf, 0)
     except UnsupportedScene as e:
         out.update(status="unsupported", message=str(e))
         return out
@@ -113,6 +125,7 @@ def run_variant(loader, request):
             f"{n['element']} ({n['path']}): {n['reason']}" for n in moving))
         return out
     out["stepSeconds"] = best_steps if math.isfinite(best_steps) else None
+    out["stepCpuSeconds"] = best_cpu if math.isfinite(best_cpu) else None
     out["loopSeconds"] = timing["loop"]
     out["runsPerRepeat"] = runs
     out["trace"] = doc

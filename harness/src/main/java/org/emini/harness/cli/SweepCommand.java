@@ -72,12 +72,19 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--no-plots", description = "Do not draw the plots.")
     boolean noPlots;
 
+    @Option(names = "--plot-cost", paramLabel = "wall|cpu", defaultValue = "wall",
+            description = "The plots' cost axis: wall time (default) or the ticking thread's CPU time, steadier on a busy machine.")
+    String plotCost;
+
     @Option(names = "--progress", negatable = true,
             description = "Show a progress bar (default: when the output is a terminal).")
     Boolean progress;
 
     @Override
     public Integer call() throws Exception {
+        if (!plotCost.equals("wall") && !plotCost.equals("cpu")) {
+            throw new IllegalArgumentException("--plot-cost " + plotCost + ": wall or cpu");
+        }
         String[] kn = shard.split("/");
         int k = Integer.parseInt(kn[0].trim());
         int n = Integer.parseInt(kn[1].trim());
@@ -143,7 +150,7 @@ final class SweepCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "sweep: done in %.1f s; results in %s%n", (System.nanoTime() - t0) / 1e9, store.file());
         if (!noPlots) {
             List<SweepPoint> all = PointStore.loadAll(store.file().toAbsolutePath().getParent());
-            int plots = WorkPrecisionPlots.write(all, reports.resolve("plots"));
+            int plots = WorkPrecisionPlots.write(all, reports.resolve("plots"), plotCost.equals("cpu"));
             System.out.println("sweep: " + plots + " plots in " + reports.resolve("plots"));
         }
         return 0;

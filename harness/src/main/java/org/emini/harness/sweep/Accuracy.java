@@ -132,7 +132,10 @@ public final class Accuracy {
         }
         for (int i = 1; i < n; i++) {
             double t1 = trace.time(i);
-            if (t <= t1 + 1e-12) {
+            if (Math.abs(t - t1) <= 1e-12) {
+                return column[i]; // on a sample: its value exactly (a trace against itself errs by 0)
+            }
+            if (t < t1) {
                 double t0 = trace.time(i - 1);
                 double u = t1 == t0 ? 1 : (t - t0) / (t1 - t0);
                 return column[i - 1] + u * (column[i] - column[i - 1]);

@@ -53,7 +53,8 @@ public final class EngineBackend implements SweepBackend {
             return new Measured("error", traced.message(), null, Double.NaN, simulated);
         }
         try {
-            return new Measured("ok", "", traced.trace(), bestTime(s, repeats), simulated);
+            double[] best = bestTime(s, repeats);
+            return new Measured("ok", "", traced.trace(), best[0], simulated, best[1]);
         } catch (UnsupportedElementException | RuntimeException e) {
             return new Measured("error", "the timed run failed where the traced run did not: " + e, null,
                     Double.NaN, simulated);
@@ -61,36 +62,43 @@ public final class EngineBackend implements SweepBackend {
     }
 
     /**
-     * Best wall time of the scene's ticks over {@code repeats} repeats, each of as many runs n as make
-     * it last {@link #MIN_REPEAT_SECONDS} (n doubles from 1; the runs that find n are warm-up, the last
-     * of them is the first repeat), divided by n: timeit's autorange, which the oracle uses too.
+     * Best time of the scene's ticks over {@code repeats} repeats, each of as many runs n as make it last
+     * {@link #MIN_REPEAT_SECONDS} of wall time (n doubles from 1; the runs that find n are warm-up, the
+     * last of them is the first repeat), divided by n: timeit's autorange, which the oracle uses too.
      *
-     * @return seconds per run, NaN without repeats
+     * @return {best wall seconds per run, best CPU seconds per run}, NaN without repeats
      */
-    static double bestTime(Scenario s, int repeats) throws UnsupportedElementException {
+    static double[] bestTime(Scenario s, int repeats) throws UnsupportedElementException {
         if (repeats <= 0) {
-            return Double.NaN;
+            return new double[] {Double.NaN, Double.NaN};
         }
         int n = 1;
-        double total;
+        double[] total;
         while (true) {
-            total = 0;
-            for (int i = 0; i < n; i++) {
-                total += ScenarioRunner.timeTicks(s);
-            }
-            if (total >= MIN_REPEAT_SECONDS || n >= MAX_RUNS_PER_REPEAT) {
+            total = repeat(s, n);
+            if (total[0] >= MIN_REPEAT_SECONDS || n >= MAX_RUNS_PER_REPEAT) {
                 break;
             }
             n *= 2;
         }
-        double best = total / n;
+        double wall = total[0] / n;
+        double cpu = total[1] / n;
         for (int r = 1; r < repeats; r++) {
-            total = 0;
-            for (int i = 0; i < n; i++) {
-                total += ScenarioRunner.timeTicks(s);
-            }
-            best = Math.min(best, total / n);
+            total = repeat(s, n);
+            wall = Math.min(wall, total[0] / n);
+            cpu = Math.min(cpu, total[1] / n);
         }
-        return best;
+        return new double[] {wall, cpu};
+    }
+
+    private static double[] repeat(Scenario s, int n) throws UnsupportedElementException {
+        double wall = 0;
+        double cpu = 0;
+        for (int i = 0; i < n; i++) {
+            ScenarioRunner.TickTime t = ScenarioRunner.timeTicks(s);
+            wall += t.wallSeconds();
+            cpu += t.cpuSeconds();
+        }
+        return new double[] {wall, cpu};
     }
 }

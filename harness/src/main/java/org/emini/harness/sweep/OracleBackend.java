@@ -174,7 +174,7 @@ public final class OracleBackend implements SweepBackend, AutoCloseable {
         } catch (IOException | RuntimeException e) {
             return new Measured("error", "unreadable oracle trace: " + e.getMessage(), null, Double.NaN, simulated);
         }
-        return new Measured("ok", notes(r), trace, number(r, "stepSeconds"), simulated);
+        return new Measured("ok", notes(r), trace, number(r, "stepSeconds"), simulated, number(r, "stepCpuSeconds"));
     }
 
     /** What pymunk runs differently or leaves out (without changing the bodies' motion), for an ok point. */

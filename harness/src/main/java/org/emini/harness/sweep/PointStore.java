@@ -117,6 +117,7 @@ public final class PointStore {
         num(o, "maxError", p.maxError());
         num(o, "rmsError", p.rmsError());
         num(o, "costSeconds", p.costSeconds());
+        num(o, "cpuCostSeconds", p.cpuCostSeconds());
         o.addProperty("repeats", p.repeats());
         num(o, "energyDrift", p.energyDrift());
         num(o, "momentumDrift", p.momentumDrift());
@@ -147,6 +148,6 @@ public final class PointStore {
         return new SweepPoint(s(o, "scene"), s(o, "engine"), o.get("rate").getAsInt(), o.get("iterations").getAsInt(),
                 s(o, "status"), s(o, "message"), s(o, "reference"), d(o, "finalError"), d(o, "maxError"),
                 d(o, "rmsError"), d(o, "costSeconds"), o.get("repeats").getAsInt(), d(o, "energyDrift"),
-                d(o, "momentumDrift"), d(o, "motion"));
+                d(o, "momentumDrift"), d(o, "motion"), d(o, "cpuCostSeconds"));
     }
 }

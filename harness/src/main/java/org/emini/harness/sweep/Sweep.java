@@ -93,11 +93,13 @@ public final class Sweep {
         SweepBackend.Measured m = t.backend().run(id, variant, repeats);
         if (!m.status().equals("ok")) {
             return new SweepPoint(id, t.backend().name(), t.rate(), t.iterations(), m.status(), m.message(), "",
-                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, repeats, Double.NaN, Double.NaN, Double.NaN);
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, repeats, Double.NaN, Double.NaN, Double.NaN,
+                    Double.NaN);
         }
         Scenario s = scenario(t.scene());
         List<String> bodies = comparedBodies(s, m.trace());
         double cost = m.bestSeconds() / m.simulatedSeconds();
+        double cpuCost = m.bestCpuSeconds() / m.simulatedSeconds();
         ClosedForm cf = closedForm(t.scene());
         double[] errors;
         String reference;
@@ -112,7 +114,7 @@ public final class Sweep {
             if (ref == null) {
                 return new SweepPoint(id, t.backend().name(), t.rate(), t.iterations(), "error",
                         "the reference setting did not run", reference, Double.NaN, Double.NaN, Double.NaN, cost,
-                        repeats, Double.NaN, Double.NaN, Double.NaN);
+                        repeats, Double.NaN, Double.NaN, Double.NaN, cpuCost);
             }
             errors = Accuracy.againstTrace(m.trace(), bodies, ref);
             motion = Accuracy.motion(ref, bodies, null);
@@ -131,7 +133,7 @@ public final class Sweep {
             momentum = Math.max(Accuracy.drift(px, scale), Accuracy.drift(py, scale));
         }
         return new SweepPoint(id, t.backend().name(), t.rate(), t.iterations(), blewUp ? "unstable" : "ok",
-                blewUp ? "NaN or infinite state" : m.message(), reference, e[0], e[1], e[2], cost, repeats, energy, momentum, motion);
+                blewUp ? "NaN or infinite state" : m.message(), reference, e[0], e[1], e[2], cost, repeats, energy, momentum, motion, cpuCost);
     }
 
     private synchronized Trace reference(Task t, Trace own) {

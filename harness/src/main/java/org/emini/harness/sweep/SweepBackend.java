@@ -33,7 +33,13 @@ public interface SweepBackend {
      * @param trace the samples, or null
      * @param bestSeconds best wall time of the ticks alone over the repeats (s), NaN without repeats
      * @param simulatedSeconds simulated time (s)
+     * @param bestCpuSeconds best CPU time of the ticking thread over the repeats (s), NaN when unknown
      */
-    record Measured(String status, String message, Trace trace, double bestSeconds, double simulatedSeconds) {
+    record Measured(String status, String message, Trace trace, double bestSeconds, double simulatedSeconds,
+                    double bestCpuSeconds) {
+        /** Without a CPU time. */
+        public Measured(String status, String message, Trace trace, double bestSeconds, double simulatedSeconds) {
+            this(status, message, trace, bestSeconds, simulatedSeconds, Double.NaN);
+        }
     }
 }

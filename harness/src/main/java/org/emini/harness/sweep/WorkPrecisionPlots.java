@@ -35,6 +35,18 @@ public final class WorkPrecisionPlots {
      * @return the number of files written
      */
     public static int write(List<SweepPoint> points, Path dir) throws IOException {
+        return write(points, dir, false);
+    }
+
+    /**
+     * Writes every plot the points allow, the cost axis in wall time or in CPU time.
+     *
+     * @param cpu whether the cost axis is {@code cpuCostSeconds} (else {@code costSeconds})
+     * @return the number of files written
+     */
+    public static int write(List<SweepPoint> points, Path dir, boolean cpu) throws IOException {
+        ToDoubleFunction<SweepPoint> cost = cpu ? SweepPoint::cpuCostSeconds : SweepPoint::costSeconds;
+        String costTitle = "cost: " + (cpu ? "CPU" : "wall") + " seconds of the ticks per simulated second";
         System.setProperty("java.awt.headless", "true");
         Files.createDirectories(dir);
         Map<String, List<SweepPoint>> byScene = new TreeMap<>();
@@ -46,13 +58,13 @@ public final class WorkPrecisionPlots {
             String ref = e.getValue().stream().map(SweepPoint::reference).filter(r -> !r.isEmpty()).findFirst().orElse("");
             String against = ref.startsWith("closedForm:") ? "closed form " + ref.substring(11) : "tightest setting " + ref.replace("self:", "");
             n += plot(e.getValue(), SweepPoint::maxError, e.getKey() + ": whole-run error vs " + against,
-                    "max error over the run (px)", dir.resolve(stem(e.getKey()) + "-error"));
+                    "max error over the run (px)", dir.resolve(stem(e.getKey()) + "-error"), cost, costTitle);
             n += plot(e.getValue(), SweepPoint::finalError, e.getKey() + ": final-time error vs " + against,
-                    "error at the final time (px)", dir.resolve(stem(e.getKey()) + "-final"));
+                    "error at the final time (px)", dir.resolve(stem(e.getKey()) + "-final"), cost, costTitle);
             n += plot(e.getValue(), SweepPoint::energyDrift, e.getKey() + ": energy drift vs cost",
-                    "max |E - E0| / max KE", dir.resolve(stem(e.getKey()) + "-energy"));
+                    "max |E - E0| / max KE", dir.resolve(stem(e.getKey()) + "-energy"), cost, costTitle);
             n += plot(e.getValue(), SweepPoint::momentumDrift, e.getKey() + ": momentum drift vs cost",
-                    "max |p - p0| / max |p|", dir.resolve(stem(e.getKey()) + "-momentum"));
+                    "max |p - p0| / max |p|", dir.resolve(stem(e.getKey()) + "-momentum"), cost, costTitle);
         }
         return n;
     }
@@ -67,10 +79,16 @@ public final class WorkPrecisionPlots {
      * drawable ones (status ok, a positive finite figure and cost), ordered by rate.
      */
     static Map<String, List<SweepPoint>> lines(List<SweepPoint> points, ToDoubleFunction<SweepPoint> y) {
+        return lines(points, y, SweepPoint::costSeconds);
+    }
+
+    static Map<String, List<SweepPoint>> lines(List<SweepPoint> points, ToDoubleFunction<SweepPoint> y,
+                                               ToDoubleFunction<SweepPoint> cost) {
         Map<String, List<SweepPoint>> lines = new TreeMap<>();
         for (SweepPoint p : points) {
             double v = y.applyAsDouble(p);
-            if (p.status().equals("ok") && v > 0 && Double.isFinite(v) && p.costSeconds() > 0 && Double.isFinite(p.costSeconds())) {
+            double c = cost.applyAsDouble(p);
+            if (p.status().equals("ok") && v > 0 && Double.isFinite(v) && c > 0 && Double.isFinite(c)) {
                 lines.computeIfAbsent(label(p), k -> new ArrayList<>()).add(p);
             }
         }
@@ -84,15 +102,15 @@ public final class WorkPrecisionPlots {
     }
 
     private static int plot(List<SweepPoint> points, ToDoubleFunction<SweepPoint> y, String title, String yTitle,
-                            Path stem) throws IOException {
-        Map<String, List<SweepPoint>> lines = lines(points, y);
+                            Path stem, ToDoubleFunction<SweepPoint> cost, String costTitle) throws IOException {
+        Map<String, List<SweepPoint>> lines = lines(points, y, cost);
         if (lines.isEmpty()) {
             Files.deleteIfExists(stem.resolveSibling(stem.getFileName() + ".svg"));
             return 0;
         }
         List<Integer> iterations = points.stream().map(SweepPoint::iterations).distinct().sorted().toList();
         XYChart chart = new XYChartBuilder().width(800).height(440).title(title)
-                .xAxisTitle("cost: wall seconds of the ticks per simulated second").yAxisTitle(yTitle).build();
+                .xAxisTitle(costTitle).yAxisTitle(yTitle).build();
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
@@ -100,7 +118,7 @@ public final class WorkPrecisionPlots {
         chart.getStyler().setLegendLayout(org.knowm.xchart.style.Styler.LegendLayout.Vertical);
         for (Map.Entry<String, List<SweepPoint>> line : lines.entrySet()) {
             List<SweepPoint> ps = line.getValue();
-            double[] xs = ps.stream().mapToDouble(SweepPoint::costSeconds).toArray();
+            double[] xs = ps.stream().mapToDouble(cost).toArray();
             double[] ys = ps.stream().mapToDouble(y).toArray();
             var s = chart.addSeries(line.getKey(), xs, ys);
             boolean oracle = !ps.get(0).engine().equals("emini");

@@ -161,6 +161,8 @@ class SweepTest {
                 assertTrue(Double.isFinite(p.maxError()) && p.maxError() > 0, p.toString());
                 assertTrue(Double.isFinite(p.finalError()) && Double.isFinite(p.rmsError()), p.toString());
                 assertTrue(p.costSeconds() > 0 && Double.isFinite(p.costSeconds()), p.toString());
+                assertTrue(p.cpuCostSeconds() > 0 && Double.isFinite(p.cpuCostSeconds()), p.toString());
+                assertEquals(400, p.motion(), 1e-6, "the ball ends 400 px from where it starts");
                 assertTrue(Double.isFinite(p.energyDrift()), "a projectile conserves energy: " + p);
             }
         }
