@@ -6,6 +6,9 @@
         skipped, unsupported, invalid or error; what pymunk cannot express; the trace's path).
     emini-oracle expand [--schema FILE] PATHS...
         Prints the scenes with generators expanded, as JSON (the harness's `expand` prints the same).
+    emini-oracle serve [--schema FILE]
+        Runs scene variants sent as JSON lines on stdin, one response line each (trace, best step
+        time over repeats): the harness's sweeps and stability maps use it (see serve.py).
 """
 
 from __future__ import annotations
@@ -98,6 +101,11 @@ def cmd_expand(args):
     return 1 if bad else 0
 
 
+def cmd_serve(args):
+    from .serve import serve
+    return serve(_loader(args.schema))
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(prog="emini-oracle", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -113,6 +121,9 @@ def main(argv=None):
     e.add_argument("paths", nargs="+", metavar="PATHS")
     e.add_argument("--schema")
     e.set_defaults(func=cmd_expand)
+    v = sub.add_parser("serve", help="run scene variants sent as JSON lines on stdin (the harness's sweeps)")
+    v.add_argument("--schema")
+    v.set_defaults(func=cmd_serve)
     args = p.parse_args(argv)
     return args.func(args)
 

@@ -61,6 +61,12 @@ class Snapshot:
         return self.states
 
 
+def _distance(a, b):
+    """|b - a|, inf rather than an OverflowError once a run has blown up (pymunk's Vec2d.length squares
+    with **, which raises on overflow, so a stability map would read "error" instead of the blow-up)."""
+    return math.hypot(b.x - a.x, b.y - a.y)
+
+
 def create(spec, built: Built, snapshot: Snapshot):
     return {"energy": Energy, "linearMomentum": LinearMomentum, "angularMomentum": AngularMomentum,
             "penetration": Penetration, "constraintError": ConstraintError, "tunnelling": Tunnelling,
@@ -96,8 +102,9 @@ class Energy(Metric):
                 potential -= m * (gx * x + gy * y)
         springs = 0.0
         for s in self.built.springs:
-            d = (s.b.local_to_world(s.anchor_b) - s.a.local_to_world(s.anchor_a)).length
-            springs += 0.5 * s.stiffness * (d - s.rest) ** 2
+            d = _distance(s.a.local_to_world(s.anchor_a), s.b.local_to_world(s.anchor_b))
+            stretch = d - s.rest  # x * x gives inf on overflow where x ** 2 raises OverflowError
+            springs += 0.5 * s.stiffness * stretch * stretch
         return [kinetic, potential, kinetic + potential + springs]
 
 
@@ -175,7 +182,7 @@ class ConstraintError(Metric):
     def sample(self, tick):
         errors = []
         for link in self.links:
-            d = (link.b.local_to_world(link.anchor_b) - link.a.local_to_world(link.anchor_a)).length
+            d = _distance(link.a.local_to_world(link.anchor_a), link.b.local_to_world(link.anchor_b))
             errors.append(d if link.kind == "pin" else abs(d - link.rest))
         if not errors:
             return [0.0, 0.0]

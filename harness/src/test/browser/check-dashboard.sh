@@ -2,7 +2,8 @@
 # Opens a written dashboard (REPORTS/index.html) from the file system in headless Chromium, lets the
 # page's own self-test (#selftest) run (it starts the replay and checks every section), and fails
 # unless the page reports no script errors, every section filled, the plots loaded and the replay
-# moving. Installs Debian's chromium first when /usr/bin/chromium is missing.
+# moving (and, with EMINI_REQUIRE_ORACLE set, the oracle's points and maps present). Installs Debian's
+# chromium first when /usr/bin/chromium is missing.
 #   harness/src/test/browser/check-dashboard.sh REPORTS [SCREENSHOT.png]
 set -euo pipefail
 reports=$(cd "$1" && pwd)
@@ -27,6 +28,14 @@ fi
 echo "check-dashboard: $result"
 if [ -n "$shot" ]; then
   timeout 120 "$CHROMIUM" "${flags[@]}" --window-size=1200,2400 --screenshot="$shot" "file://$reports/index.html" >/dev/null 2>&1 || true
+fi
+# With EMINI_REQUIRE_ORACLE set (./emini test sets it) the page must also show the pymunk oracle's
+# sweep points and stability maps.
+if [ -n "${EMINI_REQUIRE_ORACLE:-}" ]; then
+  case "$result" in
+    *'"oraclePoints":0,'*|*'"oraclePoints":0}'*|*'"oracleMapTables":0,'*)
+      echo "check-dashboard: FAILED: no pymunk sweep points or stability maps on the page" >&2; exit 1 ;;
+  esac
 fi
 case "$result" in
   *'"ok":true'*) exit 0 ;;

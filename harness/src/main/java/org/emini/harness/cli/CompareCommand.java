@@ -66,13 +66,8 @@ final class CompareCommand implements Callable<Integer> {
     @Option(names = "--jobs", paramLabel = "N", description = "Scenes run in parallel on each side (default: the number of cores).")
     Integer jobs;
 
-    @Option(names = "--oracle", paramLabel = "DIR",
-            description = "The oracle's folder (default: oracle-py beside the scenarios folder).")
-    Path oracleDir;
-
-    @Option(names = "--python", paramLabel = "CMD",
-            description = "The Python that creates the oracle's environment (default: $EMINI_PYTHON or python3).")
-    String python;
+    @Mixin
+    OracleOptions oracleOptions;
 
     @Option(names = "--setup-only", description = "Create or refresh the oracle's environment, then stop.")
     boolean setupOnly;
@@ -80,8 +75,8 @@ final class CompareCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         long start = System.nanoTime();
-        Path oracleHome = oracleDir != null ? oracleDir : library.root().getParent().resolve("oracle-py");
-        OracleEnvironment env = new OracleEnvironment(oracleHome, python != null ? python : OracleEnvironment.defaultPython());
+        Path oracleHome = oracleOptions.home(library);
+        OracleEnvironment env = oracleOptions.environment(library);
         Path interpreter = env.ensure(System.err);
         if (setupOnly) {
             System.out.println("oracle environment ready: " + interpreter);

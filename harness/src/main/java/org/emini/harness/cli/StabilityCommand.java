@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
@@ -16,6 +17,7 @@ import org.emini.harness.sweep.EngineBackend;
 import org.emini.harness.sweep.OracleBackend;
 import org.emini.harness.sweep.StabilityFamily;
 import org.emini.harness.sweep.StabilityMap;
+import org.emini.harness.sweep.StabilityMapImage;
 import org.emini.harness.sweep.SweepBackend;
 import org.emini.harness.sweep.SweepGrid;
 import picocli.CommandLine.Command;
@@ -44,8 +46,15 @@ final class StabilityCommand implements Callable<Integer> {
     @Option(names = "--iterations", paramLabel = "N", defaultValue = "10", description = "Solver iterations (default: ${DEFAULT-VALUE}).")
     int iterations;
 
+    @Option(names = "--engines", paramLabel = "NAME,...", split = ",", defaultValue = "emini,pymunk",
+            description = "Backends (default: ${DEFAULT-VALUE}); if pymunk cannot be set up its maps say why.")
+    List<String> engines;
+
     @Option(names = "--progress", negatable = true, description = "Show a progress bar (default: when the output is a terminal).")
     Boolean progress;
+
+    @Mixin
+    OracleOptions oracle;
 
     @Override
     public Integer call() throws Exception {
@@ -57,7 +66,29 @@ final class StabilityCommand implements Callable<Integer> {
                 chosen.add(f);
             }
         }
-        List<SweepBackend> backends = List.of(new EngineBackend(library.loader()), new OracleBackend());
+        List<SweepBackend> backends = new ArrayList<>();
+        OracleBackend pymunk = null;
+        for (String e : engines) {
+            switch (e) {
+                case "emini" -> backends.add(new EngineBackend(library.loader()));
+                case "pymunk" -> backends.add(pymunk = oracle.backend(library, reports.resolve("oracle-serve.log")));
+                default -> throw new IllegalArgumentException("unknown engine " + e + " (emini, pymunk)");
+            }
+        }
+        try {
+            return maps(grid, chosen, backends, pymunk);
+        } finally {
+            if (pymunk != null) {
+                pymunk.close();
+            }
+        }
+    }
+
+    private int maps(SweepGrid grid, List<StabilityFamily> chosen, List<SweepBackend> backends, OracleBackend pymunk)
+            throws Exception {
+        if (pymunk != null && pymunk.unavailable() != null) {
+            System.err.println("stability: pymunk skipped: " + pymunk.unavailable());
+        }
         List<Object> out = new ArrayList<>();
         boolean bar = progress != null ? progress : System.console() != null;
         try (ProgressBar pb = bar ? new ProgressBarBuilder().setTaskName("families").setInitialMax(chosen.size())
@@ -75,11 +106,21 @@ final class StabilityCommand implements Callable<Integer> {
                     maps.add(StabilityMap.run(f, b, grid.rates(), iterations));
                 }
                 fam.put("maps", maps);
+                String image = "maps/" + f.name() + ".svg";
+                StabilityMapImage.write(reports.resolve(image), f, grid.rates(), iterations, maps);
+                fam.put("image", image);
                 out.add(fam);
-                StabilityMap.Map engine = maps.get(0);
-                long stable = engine.cells().stream().filter(c -> c.verdict().equals("stable")).count();
-                System.out.printf("stability %-16s emini %d/%d cells stable%s%n", f.name(), stable, engine.cells().size(),
-                        engine.cells().stream().anyMatch(c -> c.verdict().equals("unsupported")) ? " (unsupported: " + engine.cells().get(0).detail() + ")" : "");
+                StringBuilder line = new StringBuilder(String.format(Locale.ROOT, "stability %-16s", f.name()));
+                for (StabilityMap.Map m : maps) {
+                    long stable = m.cells().stream().filter(c -> c.verdict().equals("stable")).count();
+                    line.append(String.format(Locale.ROOT, "  %s %d/%d stable", m.engine(), stable, m.cells().size()));
+                    m.cells().stream().filter(c -> c.verdict().equals("unsupported") || c.verdict().equals("error"))
+                            .findFirst().ifPresent(c -> line.append(" (").append(c.verdict()).append(": ").append(c.detail()).append(")"));
+                    if (!m.note().isEmpty()) {
+                        line.append(" (").append(m.note()).append(")");
+                    }
+                }
+                System.out.println(line);
                 if (pb != null) {
                     pb.step();
                 }
@@ -88,11 +129,15 @@ final class StabilityCommand implements Callable<Integer> {
         Map<String, Object> doc = new LinkedHashMap<>();
         doc.put("format", "emini-stability");
         doc.put("version", 1);
+        doc.put("engines", backends.stream().map(SweepBackend::name).toList());
+        if (pymunk != null) {
+            doc.put("oracle", pymunk.unavailable() == null ? pymunk.versions() : pymunk.unavailable());
+        }
         doc.put("families", out);
         Files.createDirectories(reports);
         Files.writeString(reports.resolve("stability.json"),
                 new GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues().create().toJson(doc), StandardCharsets.UTF_8);
-        System.out.println("stability: " + reports.resolve("stability.json"));
+        System.out.println("stability: " + reports.resolve("stability.json") + ", images in " + reports.resolve("maps"));
         return 0;
     }
 }

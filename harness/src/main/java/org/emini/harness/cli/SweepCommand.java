@@ -61,11 +61,20 @@ final class SweepCommand implements Callable<Integer> {
     int repeats;
 
     @Option(names = "--engines", paramLabel = "NAME,...", split = ",", defaultValue = "emini,pymunk",
-            description = "Backends (default: ${DEFAULT-VALUE}; pymunk is skipped while pending).")
+            description = "Backends (default: ${DEFAULT-VALUE}). pymunk runs in the oracle's environment"
+                    + " (oracle-py/.venv, created on first use); if it cannot be set up the sweep says why and"
+                    + " runs the others.")
     List<String> engines;
+
+    @Mixin
+    OracleOptions oracle;
 
     @Option(names = "--no-plots", description = "Do not draw the plots.")
     boolean noPlots;
+
+    @Option(names = "--plot-cost", paramLabel = "wall|cpu", defaultValue = "wall",
+            description = "The plots' cost axis: wall time (default) or the ticking thread's CPU time, steadier on a busy machine.")
+    String plotCost;
 
     @Option(names = "--progress", negatable = true,
             description = "Show a progress bar (default: when the output is a terminal).")
@@ -73,6 +82,9 @@ final class SweepCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (!plotCost.equals("wall") && !plotCost.equals("cpu")) {
+            throw new IllegalArgumentException("--plot-cost " + plotCost + ": wall or cpu");
+        }
         String[] kn = shard.split("/");
         int k = Integer.parseInt(kn[0].trim());
         int n = Integer.parseInt(kn[1].trim());
@@ -87,21 +99,36 @@ final class SweepCommand implements Callable<Integer> {
             scenes.add(Sweep.read(loader, f));
         }
         List<SweepBackend> backends = new ArrayList<>();
+        OracleBackend pymunk = null;
         for (String e : engines) {
             switch (e) {
                 case "emini" -> backends.add(new EngineBackend(loader));
-                case "pymunk" -> backends.add(new OracleBackend());
+                case "pymunk" -> backends.add(pymunk = oracle.backend(library, reports.resolve("oracle-serve.log")));
                 default -> throw new IllegalArgumentException("unknown engine " + e + " (emini, pymunk)");
             }
         }
+        try {
+            return sweep(grid, loader, scenes, backends, pymunk, k, n);
+        } finally {
+            if (pymunk != null) {
+                pymunk.close();
+            }
+        }
+    }
+
+    private int sweep(SweepGrid grid, ScenarioLoader loader, List<Sweep.SceneFile> scenes, List<SweepBackend> backends,
+                      OracleBackend pymunk, int k, int n) throws Exception {
         for (SweepBackend b : backends) {
             if (b.unavailable() != null) {
-                System.err.println("sweep: " + b.name() + " skipped, " + b.unavailable());
+                System.err.println("sweep: " + b.name() + " skipped: " + b.unavailable());
             }
+        }
+        if (pymunk != null && pymunk.unavailable() == null) {
+            System.out.println("sweep: oracle " + pymunk.versions() + " (one process for the whole sweep)");
         }
         PointStore store = new PointStore(results != null ? results : reports.resolve("points.jsonl"));
         Sweep sweep = new Sweep(loader, grid, repeats);
-        List<Sweep.Task> tasks = sweep.tasks(scenes, backends, k, n, store.load().keySet());
+        List<Sweep.Task> tasks = sweep.tasks(scenes, backends, k, n, store.completed());
         System.out.printf(Locale.ROOT, "sweep: %d scenes, %d rates x %d iteration counts, shard %d/%d: %d points to run%n",
                 scenes.size(), grid.rates().size(), grid.iterations().size(), k, n, tasks.size());
         boolean bar = progress != null ? progress : System.console() != null;
@@ -123,7 +150,7 @@ final class SweepCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "sweep: done in %.1f s; results in %s%n", (System.nanoTime() - t0) / 1e9, store.file());
         if (!noPlots) {
             List<SweepPoint> all = PointStore.loadAll(store.file().toAbsolutePath().getParent());
-            int plots = WorkPrecisionPlots.write(all, reports.resolve("plots"));
+            int plots = WorkPrecisionPlots.write(all, reports.resolve("plots"), plotCost.equals("cpu"));
             System.out.println("sweep: " + plots + " plots in " + reports.resolve("plots"));
         }
         return 0;

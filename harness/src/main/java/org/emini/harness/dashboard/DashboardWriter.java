@@ -58,7 +58,22 @@ public final class DashboardWriter {
         JsonObject results = readJson(reports.resolve("results.json"));
         data.add("results", results);
         data.add("compare", readJson(reports.resolve("compare").resolve("compare.json")));
-        data.add("stability", readJson(reports.resolve("stability").resolve("stability.json")));
+        JsonObject stability = readJson(reports.resolve("stability").resolve("stability.json"));
+        if (stability != null && stability.has("families")) {
+            // Map images are relative to the stability folder; the page is one folder up. Keep those that exist.
+            for (JsonElement f : stability.getAsJsonArray("families")) {
+                JsonObject fam = f.getAsJsonObject();
+                if (fam.has("image")) {
+                    String image = fam.get("image").getAsString();
+                    if (Files.isRegularFile(reports.resolve("stability").resolve(image))) {
+                        fam.addProperty("image", "stability/" + image);
+                    } else {
+                        fam.remove("image");
+                    }
+                }
+            }
+        }
+        data.add("stability", stability);
         List<SweepPoint> points = PointStore.loadAll(reports.resolve("sweep"));
         JsonArray pts = new JsonArray();
         JsonObject plots = new JsonObject();

@@ -2,7 +2,7 @@ package org.emini.harness.generate;
 
 /**
  * The random numbers of the rain generator: SplitMix64 (Steele, Lea, Flood 2014), chosen because it is
- * five lines in any language, so the Python oracle (issue 6) rebuilds exactly the same scene from the
+ * five lines in any language, so the Python oracle (oracle-py/) rebuilds exactly the same scene from the
  * same seed. The algorithm is spelled out in scenarios/README.md; do not replace it with
  * java.util.Random.
  */

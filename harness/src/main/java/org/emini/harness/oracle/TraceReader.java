@@ -40,7 +40,13 @@ public final class TraceReader {
         }
     }
 
-    static Read parse(JsonObject doc, String shown) throws IOException {
+    /**
+     * Reads a trace document already parsed (the oracle's sweep answers carry their trace inline).
+     *
+     * @param doc the trace
+     * @param shown how to name it in errors
+     */
+    public static Read parse(JsonObject doc, String shown) throws IOException {
         if (!"emini-trace".equals(string(doc, "format")) || doc.get("version") == null
                 || doc.get("version").getAsInt() != 1) {
             throw new IOException(shown + ": not an emini-trace version 1");

@@ -12,7 +12,7 @@ import org.emini.harness.scenario.Channels;
 
 /**
  * Writes a trace as JSON in the format of harness/README.md (Trace format): columns per body quantity
- * and per metric channel, NaN and infinities as null. The Python oracle (issue 6) writes the same
+ * and per metric channel, NaN and infinities as null. The Python oracle (oracle-py/) writes the same
  * format, so its traces and ours compare column by column.
  */
 public final class TraceWriter {

@@ -99,6 +99,45 @@ public final class ScenarioRunner {
         return result(scenario, status, message.toString(), verdicts, stale, ticks, millis(t1 - t0), runMillis, trace);
     }
 
+    /**
+     * Time of a scene's ticks alone.
+     *
+     * @param wallSeconds wall-clock seconds
+     * @param cpuSeconds CPU seconds of the ticking thread (NaN where the JVM cannot tell)
+     */
+    public record TickTime(double wallSeconds, double cpuSeconds) {
+    }
+
+    private static final java.lang.management.ThreadMXBean THREADS = java.lang.management.ManagementFactory.getThreadMXBean();
+
+    /**
+     * Times a scene's ticks alone, as a sweep's cost: a freshly built world, then per tick the scheduled
+     * actions and {@code World.tick()}, timed as one block (wall clock and the thread's CPU time), with
+     * no metrics and no samples. The pymunk oracle times the same loop ({@code emini_oracle.run.time_steps}).
+     *
+     * @throws UnsupportedElementException if the scene uses an element the engine lacks
+     * @throws RuntimeException if the engine refuses the run (a non-finite state)
+     */
+    public static TickTime timeTicks(Scenario scenario) throws UnsupportedElementException {
+        BuiltWorld built = WorldBuilder.build(scenario);
+        World world = built.world();
+        Schedule schedule = new Schedule(built, scenario.actions(), scenario.world().timestep());
+        long ticks = scenario.ticks();
+        boolean actions = !scenario.actions().isEmpty();
+        boolean cpu = THREADS.isCurrentThreadCpuTimeSupported();
+        long c0 = cpu ? THREADS.getCurrentThreadCpuTime() : 0;
+        long t0 = System.nanoTime();
+        for (long k = 0; k < ticks; k++) {
+            if (actions) {
+                schedule.beforeTick(k);
+            }
+            world.tick();
+        }
+        long t1 = System.nanoTime();
+        long c1 = cpu ? THREADS.getCurrentThreadCpuTime() : 0;
+        return new TickTime((t1 - t0) / 1e9, cpu ? (c1 - c0) / 1e9 : Double.NaN);
+    }
+
     /** Ticks between samples: the record interval rounded to whole ticks (at least one). */
     public static long samplingTicks(RecordSpec record, double timestep) {
         return Double.isNaN(record.every()) ? 1 : Math.max(1, Math.round(record.every() / timestep));

@@ -18,7 +18,7 @@ import java.util.Map;
  *     particles) plus {@code world.simulationArea}; built by their own builders
  * @param run duration, record and expectations
  * @param closedForm the closed-form reference, or null
- * @param oracle the oracle settings (issue 6), or null
+ * @param oracle the oracle settings ({@code reference.oracle}), or null
  * @param knownFailure a mark for the whole scene, or null
  */
 public record Scenario(String name, String file, String description, String category, WorldSpec world,

@@ -89,6 +89,41 @@ public final class Accuracy {
         return out;
     }
 
+    /**
+     * How far the reference moves the compared bodies: the largest distance (px) of a body from where it
+     * starts, over the samples of {@code trace}. With a closed form, its predicted positions (a
+     * coordinate it does not predict is taken from the trace); without, the trace's own (the reference
+     * trace of a self-consistency error).
+     */
+    public static double motion(Trace trace, List<String> bodies, ClosedForm model) {
+        double worst = 0;
+        for (String b : bodies) {
+            if (!trace.has(Channels.body(b, "x"))) {
+                continue;
+            }
+            double[] x = trace.column(Channels.body(b, "x"));
+            double[] y = trace.column(Channels.body(b, "y"));
+            double x0 = Double.NaN;
+            double y0 = Double.NaN;
+            for (int i = 0; i < trace.size(); i++) {
+                double t = trace.time(i);
+                double px = model == null ? Double.NaN : model.predict(Channels.body(b, "x"), t);
+                double py = model == null ? Double.NaN : model.predict(Channels.body(b, "y"), t);
+                px = Double.isNaN(px) ? x[i] : px;
+                py = Double.isNaN(py) ? y[i] : py;
+                if (i == 0) {
+                    x0 = px;
+                    y0 = py;
+                }
+                double d = Math.hypot(px - x0, py - y0);
+                if (Double.isFinite(d)) {
+                    worst = Math.max(worst, d);
+                }
+            }
+        }
+        return worst;
+    }
+
     /** A column's value at time t, linear between samples, held at the ends. */
     static double at(Trace trace, double[] column, double t) {
         int n = trace.size();
@@ -97,7 +132,10 @@ public final class Accuracy {
         }
         for (int i = 1; i < n; i++) {
             double t1 = trace.time(i);
-            if (t <= t1 + 1e-12) {
+            if (Math.abs(t - t1) <= 1e-12) {
+                return column[i]; // on a sample: its value exactly (a trace against itself errs by 0)
+            }
+            if (t < t1) {
                 double t0 = trace.time(i - 1);
                 double u = t1 == t0 ? 1 : (t - t0) / (t1 - t0);
                 return column[i - 1] + u * (column[i] - column[i - 1]);

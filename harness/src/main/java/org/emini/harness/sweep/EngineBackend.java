@@ -1,13 +1,25 @@
 package org.emini.harness.sweep;
 
+import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.run.SceneResult;
 import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.run.Status;
 import org.emini.harness.scenario.Scenario;
 
-/** Runs variants in Emini through the harness's own runner (the wall time covers ticks and metrics). */
+/**
+ * Runs variants in Emini. One run through the harness's own runner, with the metrics, gives the trace
+ * (runs are deterministic) and lets the JIT compile the tick; then {@code repeats} runs of the ticks
+ * alone ({@link ScenarioRunner#timeTicks}: actions and {@code World.tick()}, no metrics, no samples)
+ * give the cost, the best of them; a repeat of a short scene runs it n times and divides by n
+ * ({@link #bestTime}). The oracle times the same loop the same way ({@link OracleBackend}).
+ */
 public final class EngineBackend implements SweepBackend {
+    /** A timed repeat lasts at least this long (s): short scenes run several times per repeat. */
+    public static final double MIN_REPEAT_SECONDS = 0.02;
+    /** The most runs a repeat takes. */
+    public static final int MAX_RUNS_PER_REPEAT = 1024;
+
     private final ScenarioLoader loader;
 
     /** @param loader reads the variant text */
@@ -33,21 +45,60 @@ public final class EngineBackend implements SweepBackend {
         }
         Scenario s = l.scenario();
         double simulated = s.ticks() * s.world().timestep();
-        double best = Double.POSITIVE_INFINITY;
-        SceneResult last = null;
-        if (repeats > 1) {
-            ScenarioRunner.run(s, n -> { }); // untimed: lets the JIT compile the tick before the timed runs
+        SceneResult traced = ScenarioRunner.run(s, n -> { });
+        if (traced.status() == Status.UNSUPPORTED) {
+            return new Measured("unsupported", traced.message(), null, Double.NaN, simulated);
         }
-        for (int i = 0; i < Math.max(1, repeats); i++) {
-            last = ScenarioRunner.run(s, n -> { });
-            if (last.status() == Status.UNSUPPORTED) {
-                return new Measured("unsupported", last.message(), null, Double.NaN, simulated);
-            }
-            if (last.trace() == null) {
-                return new Measured("error", last.message(), null, Double.NaN, simulated);
-            }
-            best = Math.min(best, last.runMillis() / 1000);
+        if (traced.trace() == null) {
+            return new Measured("error", traced.message(), null, Double.NaN, simulated);
         }
-        return new Measured("ok", "", last.trace(), best, simulated);
+        try {
+            double[] best = bestTime(s, repeats);
+            return new Measured("ok", "", traced.trace(), best[0], simulated, best[1]);
+        } catch (UnsupportedElementException | RuntimeException e) {
+            return new Measured("error", "the timed run failed where the traced run did not: " + e, null,
+                    Double.NaN, simulated);
+        }
+    }
+
+    /**
+     * Best time of the scene's ticks over {@code repeats} repeats, each of as many runs n as make it last
+     * {@link #MIN_REPEAT_SECONDS} of wall time (n doubles from 1; the runs that find n are warm-up, the
+     * last of them is the first repeat), divided by n: timeit's autorange, which the oracle uses too.
+     *
+     * @return {best wall seconds per run, best CPU seconds per run}, NaN without repeats
+     */
+    static double[] bestTime(Scenario s, int repeats) throws UnsupportedElementException {
+        if (repeats <= 0) {
+            return new double[] {Double.NaN, Double.NaN};
+        }
+        int n = 1;
+        double[] total;
+        while (true) {
+            total = repeat(s, n);
+            if (total[0] >= MIN_REPEAT_SECONDS || n >= MAX_RUNS_PER_REPEAT) {
+                break;
+            }
+            n *= 2;
+        }
+        double wall = total[0] / n;
+        double cpu = total[1] / n;
+        for (int r = 1; r < repeats; r++) {
+            total = repeat(s, n);
+            wall = Math.min(wall, total[0] / n);
+            cpu = Math.min(cpu, total[1] / n);
+        }
+        return new double[] {wall, cpu};
+    }
+
+    private static double[] repeat(Scenario s, int n) throws UnsupportedElementException {
+        double wall = 0;
+        double cpu = 0;
+        for (int i = 0; i < n; i++) {
+            ScenarioRunner.TickTime t = ScenarioRunner.timeTicks(s);
+            wall += t.wallSeconds();
+            cpu += t.cpuSeconds();
+        }
+        return new double[] {wall, cpu};
     }
 }

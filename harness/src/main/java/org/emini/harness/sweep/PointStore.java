@@ -55,6 +55,20 @@ public final class PointStore {
         return out;
     }
 
+    /**
+     * The keys of the points a resumed sweep skips: every point in the file except those that ended in
+     * {@code error} (an oracle process that died or timed out, say), which are run again.
+     */
+    public java.util.Set<String> completed() throws IOException {
+        java.util.Set<String> out = new java.util.LinkedHashSet<>();
+        for (SweepPoint p : load().values()) {
+            if (!p.status().equals("error")) {
+                out.add(p.key());
+            }
+        }
+        return out;
+    }
+
     /** Appends one point. */
     public synchronized void append(SweepPoint p) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
@@ -103,9 +117,12 @@ public final class PointStore {
         num(o, "maxError", p.maxError());
         num(o, "rmsError", p.rmsError());
         num(o, "costSeconds", p.costSeconds());
+        num(o, "cpuCostSeconds", p.cpuCostSeconds());
         o.addProperty("repeats", p.repeats());
         num(o, "energyDrift", p.energyDrift());
         num(o, "momentumDrift", p.momentumDrift());
+        num(o, "motion", p.motion());
+        num(o, "relativeError", p.relativeError());
         return o.toString();
     }
 
@@ -131,6 +148,6 @@ public final class PointStore {
         return new SweepPoint(s(o, "scene"), s(o, "engine"), o.get("rate").getAsInt(), o.get("iterations").getAsInt(),
                 s(o, "status"), s(o, "message"), s(o, "reference"), d(o, "finalError"), d(o, "maxError"),
                 d(o, "rmsError"), d(o, "costSeconds"), o.get("repeats").getAsInt(), d(o, "energyDrift"),
-                d(o, "momentumDrift"));
+                d(o, "momentumDrift"), d(o, "motion"), d(o, "cpuCostSeconds"));
     }
 }

@@ -28,7 +28,7 @@ public record StabilityFamily(String name, String parameter, List<Double> values
 
     private static final String GROUND = "  ground: {type: rectangle, width: %s, height: 20}\n";
 
-    /** The families the engine can build today, and the spring family that waits for springs. */
+    /** The six families, each run in both engines (springs included: the engine and pymunk both have them). */
     public static List<StabilityFamily> all() {
         return List.of(
                 new StabilityFamily("massRatio", "mass of the top box / mass of the bottom box",

@@ -16,13 +16,20 @@ public final class StabilityMap {
      * @param value the parameter value
      * @param rate ticks per second
      * @param verdict {@code stable}, {@code NaN}, {@code energy growth}, {@code tunnelling},
-     *     {@code penetration}, {@code collapse}, {@code unsupported}, {@code error} or {@code pending}
+     *     {@code penetration}, {@code collapse}, {@code unsupported} or {@code error}
      * @param detail the measured figure
      */
     public record Cell(double value, int rate, String verdict, String detail) {
     }
 
-    /** A family's map for one backend. */
+    /**
+     * A family's map for one backend.
+     *
+     * @param family the family
+     * @param engine the backend ({@code emini}, {@code pymunk})
+     * @param note why there are no cells (the backend is unavailable), or ""
+     * @param cells one per value and rate
+     */
     public record Map(String family, String engine, String note, List<Cell> cells) {
     }
 
@@ -40,7 +47,7 @@ public final class StabilityMap {
             for (int rate : rates) {
                 String id = "stability/" + family.name() + "-" + v;
                 String variant = SceneVariant.rewrite(text, id, 1.0 / rate, iterations, 1.0 / rates.get(0));
-                SweepBackend.Measured m = backend.run(id, variant, 1);
+                SweepBackend.Measured m = backend.run(id, variant, 0); // the trace only: no timing
                 cells.add(m.status().equals("ok") ? judge(family, v, rate, m.trace())
                         : new Cell(v, rate, m.status(), m.message()));
             }

@@ -55,7 +55,8 @@ public final class Sweep {
 
     /**
      * The points of shard {@code k} of {@code n} (1-based) not yet in {@code done}, in a fixed order:
-     * point i of the whole sweep belongs to shard (i mod n) + 1.
+     * point i of the whole sweep belongs to shard (i mod n) + 1. Points of a backend that is
+     * {@linkplain SweepBackend#unavailable() unavailable} are left out (a later run picks them up).
      */
     public List<Task> tasks(List<SceneFile> scenes, List<SweepBackend> backends, int k, int n, Set<String> done) {
         List<Task> out = new ArrayList<>();
@@ -92,16 +93,20 @@ public final class Sweep {
         SweepBackend.Measured m = t.backend().run(id, variant, repeats);
         if (!m.status().equals("ok")) {
             return new SweepPoint(id, t.backend().name(), t.rate(), t.iterations(), m.status(), m.message(), "",
-                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, repeats, Double.NaN, Double.NaN);
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN, repeats, Double.NaN, Double.NaN, Double.NaN,
+                    Double.NaN);
         }
         Scenario s = scenario(t.scene());
         List<String> bodies = comparedBodies(s, m.trace());
         double cost = m.bestSeconds() / m.simulatedSeconds();
+        double cpuCost = m.bestCpuSeconds() / m.simulatedSeconds();
         ClosedForm cf = closedForm(t.scene());
         double[] errors;
         String reference;
+        double motion;
         if (cf != null && Accuracy.predictsAny(m.trace(), bodies, cf)) {
             errors = Accuracy.againstClosedForm(m.trace(), bodies, cf);
+            motion = Accuracy.motion(m.trace(), bodies, cf);
             reference = "closedForm:" + s.closedForm().node().get("model").asText();
         } else {
             Trace ref = reference(t, m.trace());
@@ -109,9 +114,10 @@ public final class Sweep {
             if (ref == null) {
                 return new SweepPoint(id, t.backend().name(), t.rate(), t.iterations(), "error",
                         "the reference setting did not run", reference, Double.NaN, Double.NaN, Double.NaN, cost,
-                        repeats, Double.NaN, Double.NaN);
+                        repeats, Double.NaN, Double.NaN, Double.NaN, cpuCost);
             }
             errors = Accuracy.againstTrace(m.trace(), bodies, ref);
+            motion = Accuracy.motion(ref, bodies, null);
         }
         double[] e = Accuracy.reduce(errors);
         boolean blewUp = !finite(m.trace(), bodies);
@@ -127,7 +133,7 @@ public final class Sweep {
             momentum = Math.max(Accuracy.drift(px, scale), Accuracy.drift(py, scale));
         }
         return new SweepPoint(id, t.backend().name(), t.rate(), t.iterations(), blewUp ? "unstable" : "ok",
-                blewUp ? "NaN or infinite state" : "", reference, e[0], e[1], e[2], cost, repeats, energy, momentum);
+                blewUp ? "NaN or infinite state" : m.message(), reference, e[0], e[1], e[2], cost, repeats, energy, momentum, motion, cpuCost);
     }
 
     private synchronized Trace reference(Task t, Trace own) {
@@ -138,7 +144,7 @@ public final class Sweep {
         if (!references.containsKey(key)) {
             String v = SceneVariant.rewrite(t.scene().text(), t.scene().id(), 1.0 / grid.tightestRate(),
                     grid.tightestIterations(), grid.every());
-            SweepBackend.Measured m = t.backend().run(t.scene().id(), v, 1);
+            SweepBackend.Measured m = t.backend().run(t.scene().id(), v, 0);
             references.put(key, m.status().equals("ok") ? m.trace() : null);
         }
         return references.get(key);

@@ -3,7 +3,9 @@ package org.emini.harness.sweep;
 import org.emini.harness.run.Trace;
 
 /**
- * Something a sweep runs scene variants in: the engine, or the pymunk oracle (issue 6).
+ * Something a sweep or stability map runs scene variants in: the engine ({@link EngineBackend}) or the
+ * pymunk oracle ({@link OracleBackend}). Both time the same thing: the ticks alone, after a run with the
+ * metrics that gives the trace.
  */
 public interface SweepBackend {
     /** The engine's name in results and plots ({@code emini}, {@code pymunk}). */
@@ -13,12 +15,13 @@ public interface SweepBackend {
     String unavailable();
 
     /**
-     * Runs one variant {@code repeats} times.
+     * Runs one variant once with its metrics (the trace, and the warm-up), then {@code repeats} times
+     * with its ticks alone, timed.
      *
      * @param sceneId the scene id
      * @param variantText the variant scene (JSON text, see {@link SceneVariant})
-     * @param repeats runs to take the best wall time of
-     * @return the last run's trace (runs are deterministic) and the best wall time
+     * @param repeats timed runs to take the best wall time of; 0 for the trace only (the cost is NaN)
+     * @return the trace and the best wall time
      */
     Measured run(String sceneId, String variantText, int repeats);
 
@@ -26,11 +29,17 @@ public interface SweepBackend {
      * What running a variant gave.
      *
      * @param status {@code ok}, {@code unsupported} or {@code error} (instability is judged from the trace)
-     * @param message why, or ""
+     * @param message why, or "" (for {@code ok}: what the backend runs differently, or "")
      * @param trace the samples, or null
-     * @param bestSeconds best wall time of the ticks over the repeats (s)
+     * @param bestSeconds best wall time of the ticks alone over the repeats (s), NaN without repeats
      * @param simulatedSeconds simulated time (s)
+     * @param bestCpuSeconds best CPU time of the ticking thread over the repeats (s), NaN when unknown
      */
-    record Measured(String status, String message, Trace trace, double bestSeconds, double simulatedSeconds) {
+    record Measured(String status, String message, Trace trace, double bestSeconds, double simulatedSeconds,
+                    double bestCpuSeconds) {
+        /** Without a CPU time. */
+        public Measured(String status, String message, Trace trace, double bestSeconds, double simulatedSeconds) {
+            this(status, message, trace, bestSeconds, simulatedSeconds, Double.NaN);
+        }
     }
 }

@@ -18,10 +18,20 @@ package org.emini.harness.sweep;
  * @param energyDrift max |E(t) − E(0)| over the run divided by the largest kinetic energy (NaN when the
  *     scene does not conserve energy)
  * @param momentumDrift max |p(t) − p(0)| over the largest |p| (NaN when the scene does not conserve momentum)
+ * @param motion the reference's largest distance of a compared body from its start (px): the scale
+ *     {@link #relativeError()} divides by (NaN when unknown)
+ * @param cpuCostSeconds the same as {@code costSeconds} in CPU time of the ticking thread: unlike wall
+ *     time, not inflated by other processes on a busy machine (NaN when unknown)
  */
 public record SweepPoint(String scene, String engine, int rate, int iterations, String status, String message,
                          String reference, double finalError, double maxError, double rmsError, double costSeconds,
-                         int repeats, double energyDrift, double momentumDrift) {
+                         int repeats, double energyDrift, double momentumDrift, double motion,
+                         double cpuCostSeconds) {
+
+    /** The whole-run error over the motion: 0.01 is an error of 1% of how far the bodies move (NaN when unknown). */
+    public double relativeError() {
+        return motion > 0 ? maxError / motion : Double.NaN;
+    }
 
     /** The key a results file is resumed by. */
     public String key() {
