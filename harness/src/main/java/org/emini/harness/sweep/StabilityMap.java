@@ -15,7 +15,7 @@ public final class StabilityMap {
      *
      * @param value the parameter value
      * @param rate ticks per second
-     * @param verdict {@code stable}, {@code NaN}, {@code energy growth}, {@code tunnelling},
+     * @param verdict {@code stable}, {@code NaN}, {@code energy growth}, {@code energy error} (a bounded rise), {@code tunnelling},
      *     {@code penetration}, {@code collapse}, {@code unsupported} or {@code error}
      * @param detail the measured figure
      */
@@ -82,7 +82,25 @@ public final class StabilityMap {
                 rise = Math.max(rise, x - e[0]);
             }
             if (rise > 0.01 * scale) {
-                return new Cell(v, rate, "energy growth", "total energy rose by " + fmt(rise) + " (" + fmt(100 * rise / scale) + "%)");
+                // Growth is unstable; a bounded oscillation or a one-off kick is an error of the
+                // energy, not a blow-up: tell them apart by the peak of the last third of the run
+                // against the first third's.
+                int third = Math.max(1, e.length / 3);
+                double early = Double.NEGATIVE_INFINITY;
+                double late = Double.NEGATIVE_INFINITY;
+                for (int i = 0; i < e.length; i++) {
+                    if (i < third) {
+                        early = Math.max(early, e[i]);
+                    } else if (i >= e.length - third) {
+                        late = Math.max(late, e[i]);
+                    }
+                }
+                String detail = "total energy rose by " + fmt(rise) + " (" + fmt(100 * rise / scale) + "%)";
+                if (late - early > 0.01 * scale) {
+                    return new Cell(v, rate, "energy growth", detail + ", still growing: the last third's peak is "
+                        + fmt(100 * (late - early) / scale) + "% above the first third's");
+                }
+                return new Cell(v, rate, "energy error", detail + ", bounded: the last third's peak is not above the first third's");
             }
         }
         if (t.has("penetration.max")) {

@@ -28,6 +28,7 @@ public final class StabilityMapImage {
             case "stable" -> new String[] {"#b7e4c7", "ok"};
             case "NaN" -> new String[] {"#d7263d", "NaN"};
             case "energy growth" -> new String[] {"#f46036", "E grows"};
+            case "energy error" -> new String[] {"#ffe08a", "E error"};
             case "tunnelling" -> new String[] {"#f4a6a6", "tunnel"};
             case "penetration" -> new String[] {"#f7b267", "overlap"};
             case "collapse" -> new String[] {"#e8a0bf", "collapse"};
@@ -99,7 +100,7 @@ public final class StabilityMapImage {
         }
         int ly = top + 40 + values.size() * CELL_H + 26;
         int lx = 10;
-        for (String v : List.of("stable", "NaN", "energy growth", "tunnelling", "penetration", "collapse", "error", "unsupported")) {
+        for (String v : List.of("stable", "NaN", "energy growth", "energy error", "tunnelling", "penetration", "collapse", "error", "unsupported")) {
             String[] st = style(v);
             svg.append(String.format(Locale.ROOT, "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"12\" fill=\"%s\"/>"
                     + "<text x=\"%d\" y=\"%d\">%s</text>%n", lx, ly, st[0], lx + 16, ly + 10, esc(v)));

@@ -264,4 +264,23 @@ class SweepTest {
         Map<String, SweepPoint> points = new PointStore(dir.resolve("r").resolve("points.jsonl")).load();
         assertEquals(Set.of(SweepPoint.key(PROJECTILE_60, "emini", 15, 10)), points.keySet());
     }
+
+    /** An energy trace of 90 samples: a spring that oscillates (bounded) or keeps gaining energy. */
+    private static Trace energyTrace(boolean growing) {
+        Trace t = new Trace(0.1, List.of(), List.of("energy.kinetic", "energy.total"));
+        for (int i = 0; i < 90; i++) {
+            double wobble = 10 * Math.abs(Math.sin(i * 0.7));
+            double total = 100 + wobble + (growing ? i : 0);
+            t.add(i, new double[] {total, total});
+        }
+        return t;
+    }
+
+    @Test
+    void aBoundedEnergyRiseIsAnErrorAndOnlyGrowthIsUnstable() {
+        StabilityFamily springs = StabilityFamily.all().stream().filter(f -> f.name().equals("springStiffness"))
+            .findFirst().orElseThrow();
+        assertEquals("energy error", StabilityMap.judge(springs, 1000, 60, energyTrace(false)).verdict());
+        assertEquals("energy growth", StabilityMap.judge(springs, 1000, 60, energyTrace(true)).verdict());
+    }
 }
