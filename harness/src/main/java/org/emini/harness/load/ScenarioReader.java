@@ -87,7 +87,6 @@ final class ScenarioReader {
                 problem(b.path(), "duplicate body name '" + b.name() + "'");
             }
         }
-
         Map<String, Section> elements = new LinkedHashMap<>();
         for (String section : ELEMENT_SECTIONS) {
             if (root.has(section)) {
