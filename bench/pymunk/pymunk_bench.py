@@ -25,32 +25,48 @@ PYMUNK_ITERATIONS = 10  # Chipmunk's default
 pymunk = None  # imported in main, from the oracle's environment
 
 
+MOTOR_TOLERANCE = 0.05  # Stability.MOTOR_TOLERANCE
+
+
 def poses(built, names):
     out = []
     for n in names:
         b = built.bodies[n]
-        out.append((b.position.x, b.position.y, b.angle, math.hypot(b.velocity.x, b.velocity.y)))
+        out.append((b.position.x, b.position.y, b.angle, math.hypot(b.velocity.x, b.velocity.y), b.angular_velocity))
     return out
 
 
-def judge(scene, ticks, initial, now):
+def judge(scene, ticks, initial, now, flatten=None, local_aabb=None):
+    """The scene check of Stability.java: same rules, same verdicts."""
     min_x, max_x, floor_top = math.inf, -math.inf, -math.inf
     size = 0.0
-    for b in scene.bodies:
+    container, target = -1, 0.0
+    index = {b.name: i for i, b in enumerate(scene.bodies)}
+    for m in scene.elements.get("motors") or []:
+        if container < 0 and "angularVelocity" in m:
+            container, target = index[m["body"]], float(m["angularVelocity"])
+    for i, b in enumerate(scene.bodies):
         w, h = b.shape.size() if b.shape.kind != "multiShape" else (0.0, 0.0)
         if b.state.static:
             min_x = min(min_x, b.x - w / 2)
             max_x = max(max_x, b.x + w / 2)
             floor_top = max(floor_top, b.y - h / 2)
-        elif size == 0:
+        elif size == 0 and i != container:
             size = max(w, h)
+    joints = scene.elements.get("joints") or []
+    half = (0.0, 0.0)
+    if container >= 0:
+        x0, y0, x1, y1 = local_aabb(flatten(scene.bodies[container].shape))
+        half = (max(-x0, x1), max(-y0, y1))
+        cx, cy, ca = now[container][0], now[container][1], now[container][2]
+        cc, cs = math.cos(ca), math.sin(ca)
     stacking = scene.category == "stacking"
     max_d = max_dx = max_dy = max_a = max_v = 0.0
     escaped = non_finite = 0
-    for b, p0, p in zip(scene.bodies, initial, now):
+    for i, (b, p0, p) in enumerate(zip(scene.bodies, initial, now)):
         if b.state.static:
             continue
-        x, y, a, v = p
+        x, y, a, v = p[:4]
         if not all(map(math.isfinite, (x, y, a))):
             non_finite += 1
             continue
@@ -59,10 +75,15 @@ def judge(scene, ticks, initial, now):
         max_dy = max(max_dy, abs(y - p0[1]))
         max_a = max(max_a, abs(a - p0[2]))
         max_v = max(max_v, v)
-        if min_x <= max_x and (x < min_x or x > max_x or y > floor_top):
+        if container >= 0:
+            if i != container:
+                dx, dy = x - cx, y - cy
+                lx, ly = cc * dx + cs * dy, -cs * dx + cc * dy
+                if not (abs(lx) <= half[0] and abs(ly) <= half[1]):
+                    escaped += 1
+        elif not joints and min_x <= max_x and (x < min_x or x > max_x or y > floor_top):
             escaped += 1
     joint_error = 0.0
-    joints = scene.elements.get("joints") or []
     if joints:
         index = {b.name: i for i, b in enumerate(scene.bodies)}
 
@@ -83,8 +104,18 @@ def judge(scene, ticks, initial, now):
                 la, lb = tuple(j.get("anchorA", (0, 0))), tuple(j.get("anchorB", (0, 0)))
             pa, pb = world(now[a], la), world(now[b], lb)
             joint_error = max(joint_error, math.hypot(pa[0] - pb[0], pa[1] - pb[1]))
+    motor_error = abs(now[container][4] - target) / abs(target) if container >= 0 else 0.0
     if non_finite or math.isnan(joint_error):
         verdict = "non-finite"
+    elif container >= 0:
+        if escaped:
+            verdict = "escaped"
+        elif joint_error > size / 4:
+            verdict = "stretched"
+        elif not motor_error <= MOTOR_TOLERANCE:
+            verdict = "slowed"
+        else:
+            verdict = "stable"
     elif joints:
         verdict = "stable" if joint_error <= size / 4 else "stretched"
     elif stacking:
@@ -98,10 +129,10 @@ def judge(scene, ticks, initial, now):
         verdict = "stable" if escaped == 0 else "escaped"
     return {"ticks": ticks, "verdict": verdict, "maxDisplacementPx": max_d, "maxDxPx": max_dx, "maxDyPx": max_dy,
             "bodySize": size, "maxAngle": max_a, "maxSpeed": max_v, "escaped": escaped, "nonFinite": non_finite,
-            "maxJointErrorPx": joint_error}
+            "maxJointErrorPx": joint_error, "motorSpeedError": motor_error}
 
 
-def measure(loader, build, root, scene_id, args):
+def measure(loader, build, flatten, local_aabb, root, scene_id, args):
     entry = {"scene": scene_id, "engine": "pymunk", "status": "ok", "message": ""}
     path = None
     for ext in (".yaml", ".yml", ".json"):
@@ -110,7 +141,9 @@ def measure(loader, build, root, scene_id, args):
     if path is None:
         return dict(entry, status="error", message="no scene file")
     scene = loader.load(path)
-    missing = [e for e in scene.elements if e != "joints"]  # the oracle builds joints as pymunk PivotJoints
+    # The oracle builds joints as pymunk PivotJoints and rotational motors as SimpleMotors against the
+    # static body (oracle-py/MAPPING.md).
+    missing = [e for e in scene.elements if e not in ("joints", "motors")]
     if missing:
         return dict(entry, status="unsupported", message="the benchmark does not build " + ", ".join(missing))
     built = build(scene)
@@ -125,7 +158,7 @@ def measure(loader, build, root, scene_id, args):
         space.step(h)
     t1 = time.perf_counter()
     ticks = preroll
-    check = judge(scene, ticks, initial, poses(built, names))
+    check = judge(scene, ticks, initial, poses(built, names), flatten, local_aabb)
 
     def rounds(n):
         results = []
@@ -151,7 +184,7 @@ def measure(loader, build, root, scene_id, args):
                 prerollMsPerTick=(t1 - t0) * 1e3 / preroll if preroll else None,
                 settings=f"px units via the oracle's builder (oracle-py/); timestep {h:g} s; "
                          f"{PYMUNK_ITERATIONS} iterations (Chipmunk's default); sleeping off; pymunk {pymunk.version}, Chipmunk {pymunk.chipmunk_version}",
-                check=check, afterRun=judge(scene, ticks, initial, poses(built, names)))
+                check=check, afterRun=judge(scene, ticks, initial, poses(built, names), flatten, local_aabb))
 
 
 def main(argv=None):
@@ -166,14 +199,14 @@ def main(argv=None):
     args = ap.parse_args(argv)
     sys.path.insert(0, str(args.root / "oracle-py" / "src"))
     from emini_oracle import scene as scene_mod
-    from emini_oracle.build import build
+    from emini_oracle.build import build, flatten, local_aabb
     global pymunk
     import pymunk
     loader = scene_mod.Loader(args.root / "scenarios" / "scenario.schema.json")
     out = []
     for s in args.scenes:
         try:
-            m = measure(loader, build, args.root, s, args)
+            m = measure(loader, build, flatten, local_aabb, args.root, s, args)
         except Exception as e:  # reported in the report, never hidden
             m = {"scene": s, "engine": "pymunk", "status": "error", "message": f"{type(e).__name__}: {e}"}
         print(f"{s:28s} pymunk     {m.get('cpuMsPerTick', float('nan')):9.3f} ms/tick cpu  "

@@ -34,6 +34,12 @@ public interface BenchEngine extends AutoCloseable {
     /** Writes the speed (px/s) of every body, in scene order, to {@code out[i]}. */
     void speeds(double[] out);
 
+    /**
+     * Writes the angular velocity (rad/s, in the scene's sense: positive grows the angle, clockwise
+     * on the screen) of every body, in scene order, to {@code out[i]}.
+     */
+    void angularVelocities(double[] out);
+
     /** The engine's settings as used, for the report (timestep, iterations, unit scale, ...). */
     String settings();
 

@@ -36,18 +36,20 @@ final class Dyn4jEngine implements BenchEngine {
         int i = 0;
         for (PeerScene.PeerBody pb : scene.bodies) {
             Body b = new Body();
-            PeerScene.PeerShape sh = pb.shape;
-            Convex c;
-            if (sh.circle) {
-                c = Geometry.createCircle(sh.radius);
-            } else {
-                Vector2[] v = new Vector2[sh.vertexCount()];
-                for (int k = 0; k < v.length; k++) {
-                    v[k] = new Vector2(sh.xy[2 * k], sh.xy[2 * k + 1]);
+            for (PeerScene.PeerShape sh : pb.parts) {
+                Convex c;
+                if (sh.circle) {
+                    c = Geometry.createCircle(sh.radius);
+                    c.translate(sh.cx, sh.cy);
+                } else {
+                    Vector2[] v = new Vector2[sh.vertexCount()];
+                    for (int k = 0; k < v.length; k++) {
+                        v[k] = new Vector2(sh.xy[2 * k], sh.xy[2 * k + 1]);
+                    }
+                    c = Geometry.createPolygon(v);
                 }
-                c = Geometry.createPolygon(v);
+                b.addFixture(c, sh.density, sh.friction, sh.restitution);
             }
-            b.addFixture(c, sh.density, sh.friction, sh.restitution);
             if (!pb.dynamic) {
                 b.setMass(MassType.INFINITE);
             } else {
@@ -64,14 +66,36 @@ final class Dyn4jEngine implements BenchEngine {
             world.addBody(b);
             bodies[i++] = b;
         }
-        for (PeerScene.PeerJoint pj : scene.joints) {
+        for (int k = 0; k < scene.joints.size(); k++) {
+            PeerScene.PeerJoint pj = scene.joints.get(k);
             Vector2 at = new Vector2(pj.x, pj.y);
-            org.dyn4j.dynamics.joint.Joint<Body> j = pj.fixed
-                ? new org.dyn4j.dynamics.joint.WeldJoint<>(bodies[pj.a], bodies[pj.b], at)
-                : new org.dyn4j.dynamics.joint.RevoluteJoint<>(bodies[pj.a], bodies[pj.b], at);
+            org.dyn4j.dynamics.joint.Joint<Body> j;
+            if (pj.fixed) {
+                j = new org.dyn4j.dynamics.joint.WeldJoint<>(bodies[pj.a], bodies[pj.b], at);
+            } else {
+                org.dyn4j.dynamics.joint.RevoluteJoint<Body> r = new org.dyn4j.dynamics.joint.RevoluteJoint<>(bodies[pj.a], bodies[pj.b], at);
+                for (PeerScene.PeerMotor pm : scene.motors) {
+                    if (pm.joint == k) {
+                        motor(r, pm);
+                    }
+                }
+                j = r;
+            }
             j.setCollisionAllowed(pj.collide);
             world.addJoint(j);
         }
+    }
+
+    /**
+     * The joint's motor. {@link PeerScene.PeerMotor#speed} is ω_b − ω_a (Box2D's sense); dyn4j's
+     * revolute motor speed is ω_a − ω_b (body 1 minus body 2), so it is negated (AdaptersTest reads
+     * the driven body's ω back in every engine).
+     */
+    private static void motor(org.dyn4j.dynamics.joint.RevoluteJoint<Body> r, PeerScene.PeerMotor pm) {
+        r.setMotorEnabled(true);
+        r.setMotorSpeed(-pm.speed);
+        r.setMaximumMotorTorqueEnabled(true);
+        r.setMaximumMotorTorque(pm.maxTorque);
     }
 
     @Override
@@ -99,6 +123,13 @@ final class Dyn4jEngine implements BenchEngine {
         for (int i = 0; i < bodies.length; i++) {
             Vector2 v = bodies[i].getLinearVelocity();
             out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+        }
+    }
+
+    @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = -bodies[i].getAngularVelocity();
         }
     }
 

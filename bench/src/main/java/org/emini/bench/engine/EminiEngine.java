@@ -59,6 +59,13 @@ final class EminiEngine implements BenchEngine {
     }
 
     @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = bodies[i].getAngularVelocity();
+        }
+    }
+
+    @Override
     public String settings() {
         return "px units; timestep " + world.getTimestep() + " s; " + world.getConstraintIterations()
             + " substeps (each one soft solve + one relax pass); default SolverSettings; no sleeping (Emini has none)";

@@ -47,17 +47,20 @@ final class GdxBox2dEngine implements BenchEngine {
             def.gravityScale = pb.gravity ? 1f : 0f;
             def.allowSleep = false;
             Body b = world.createBody(def);
-            Shape shape = shape(pb.shape);
-            FixtureDef fd = new FixtureDef();
-            fd.shape = shape;
-            fd.density = (float) pb.shape.density;
-            fd.friction = (float) pb.shape.friction;
-            fd.restitution = (float) pb.shape.restitution;
-            b.createFixture(fd);
-            shape.dispose();
+            for (PeerScene.PeerShape part : pb.parts) {
+                Shape shape = shape(part);
+                FixtureDef fd = new FixtureDef();
+                fd.shape = shape;
+                fd.density = (float) part.density;
+                fd.friction = (float) part.friction;
+                fd.restitution = (float) part.restitution;
+                b.createFixture(fd);
+                shape.dispose();
+            }
             bodies[i++] = b;
         }
-        for (PeerScene.PeerJoint pj : scene.joints) {
+        for (int k = 0; k < scene.joints.size(); k++) {
+            PeerScene.PeerJoint pj = scene.joints.get(k);
             if (pj.fixed) {
                 com.badlogic.gdx.physics.box2d.joints.WeldJointDef d = new com.badlogic.gdx.physics.box2d.joints.WeldJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vector2((float) pj.x, (float) pj.y));
@@ -67,6 +70,13 @@ final class GdxBox2dEngine implements BenchEngine {
                 com.badlogic.gdx.physics.box2d.joints.RevoluteJointDef d = new com.badlogic.gdx.physics.box2d.joints.RevoluteJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vector2((float) pj.x, (float) pj.y));
                 d.collideConnected = pj.collide;
+                for (PeerScene.PeerMotor pm : scene.motors) {
+                    if (pm.joint == k) {
+                        d.enableMotor = true;
+                        d.motorSpeed = (float) pm.speed;
+                        d.maxMotorTorque = (float) pm.maxTorque;
+                    }
+                }
                 world.createJoint(d);
             }
         }
@@ -76,6 +86,7 @@ final class GdxBox2dEngine implements BenchEngine {
         if (sh.circle) {
             CircleShape c = new CircleShape();
             c.setRadius((float) sh.radius);
+            c.setPosition(new Vector2((float) sh.cx, (float) sh.cy));
             return c;
         }
         float[] v = new float[sh.xy.length];
@@ -112,6 +123,13 @@ final class GdxBox2dEngine implements BenchEngine {
         for (int i = 0; i < bodies.length; i++) {
             Vector2 v = bodies[i].getLinearVelocity();
             out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+        }
+    }
+
+    @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = -bodies[i].getAngularVelocity();
         }
     }
 

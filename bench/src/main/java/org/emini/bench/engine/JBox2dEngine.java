@@ -51,15 +51,18 @@ final class JBox2dEngine implements BenchEngine {
             def.gravityScale = pb.gravity ? 1f : 0f;
             def.allowSleep = false;
             Body b = world.createBody(def);
-            FixtureDef fd = new FixtureDef();
-            fd.shape = shape(pb.shape);
-            fd.density = (float) pb.shape.density;
-            fd.friction = (float) pb.shape.friction;
-            fd.restitution = (float) pb.shape.restitution;
-            b.createFixture(fd);
+            for (PeerScene.PeerShape part : pb.parts) {
+                FixtureDef fd = new FixtureDef();
+                fd.shape = shape(part);
+                fd.density = (float) part.density;
+                fd.friction = (float) part.friction;
+                fd.restitution = (float) part.restitution;
+                b.createFixture(fd);
+            }
             bodies[i++] = b;
         }
-        for (PeerScene.PeerJoint pj : scene.joints) {
+        for (int k = 0; k < scene.joints.size(); k++) {
+            PeerScene.PeerJoint pj = scene.joints.get(k);
             if (pj.fixed) {
                 org.jbox2d.dynamics.joints.WeldJointDef d = new org.jbox2d.dynamics.joints.WeldJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vec2((float) pj.x, (float) pj.y));
@@ -69,6 +72,13 @@ final class JBox2dEngine implements BenchEngine {
                 org.jbox2d.dynamics.joints.RevoluteJointDef d = new org.jbox2d.dynamics.joints.RevoluteJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vec2((float) pj.x, (float) pj.y));
                 d.collideConnected = pj.collide;
+                for (PeerScene.PeerMotor pm : scene.motors) {
+                    if (pm.joint == k) {
+                        d.enableMotor = true;
+                        d.motorSpeed = (float) pm.speed;
+                        d.maxMotorTorque = (float) pm.maxTorque;
+                    }
+                }
                 world.createJoint(d);
             }
         }
@@ -78,6 +88,7 @@ final class JBox2dEngine implements BenchEngine {
         if (sh.circle) {
             CircleShape c = new CircleShape();
             c.m_radius = (float) sh.radius;
+            c.m_p.set((float) sh.cx, (float) sh.cy);
             return c;
         }
         Vec2[] v = new Vec2[sh.vertexCount()];
@@ -114,6 +125,13 @@ final class JBox2dEngine implements BenchEngine {
         for (int i = 0; i < bodies.length; i++) {
             Vec2 v = bodies[i].getLinearVelocity();
             out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+        }
+    }
+
+    @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = -bodies[i].getAngularVelocity();
         }
     }
 

@@ -142,9 +142,11 @@ public class TickBenchmark {
         int n = e.bodyCount();
         double[] now = new double[3 * n];
         double[] speeds = new double[n];
+        double[] omegas = new double[n];
         e.poses(now);
         e.speeds(speeds);
-        return Stability.judge(scenario, ticks, initial, now, speeds);
+        e.angularVelocities(omegas);
+        return Stability.judge(scenario, ticks, initial, now, speeds, omegas);
     }
 
     private void write() {

@@ -125,8 +125,11 @@ public final class MarkdownTables {
         if (num(c.get("maxJointErrorPx")) > 0) {
             s.append(String.format(Locale.ROOT, ", joint error %.1f px", num(c.get("maxJointErrorPx"))));
         }
-        if (num(c.get("escaped")) > 0 && !(num(c.get("maxJointErrorPx")) > 0)) {
+        if (num(c.get("escaped")) > 0) {
             s.append(String.format(Locale.ROOT, ", %.0f escaped", num(c.get("escaped"))));
+        }
+        if (c.get("motorSpeedError") instanceof Number && num(c.get("motorSpeedError")) != 0) {
+            s.append(String.format(Locale.ROOT, ", container ω off by %.1f%%", num(c.get("motorSpeedError")) * 100));
         }
         return s.append(')').toString();
     }

@@ -24,8 +24,7 @@ public final class BenchPlan {
         new Scene("bench/pyramid-100", "100-row pyramid (5,050 boxes)", null),
         new Scene("bench/rain-5000", "rain: 5,000 mixed shapes into a container", null),
         new Scene("bench/joint-grid", "joint grid: a 30 x 30 net of balls, 1,740 pin joints", null),
-        new Scene("bench/tumbler", "tumbler: a rotating box full of bodies",
-            "a motor-driven or kinematic container (joints and motors, branch constraint)"),
+        new Scene("bench/tumbler", "tumbler: 1,024 boxes and balls in a motor-driven rotating box", null),
         new Scene("bench/particles-10000", "10,000 particles",
             "the harness's particles builder (the engine has particles; the scene format's builder is NotYetInEngine)"));
 

@@ -1,8 +1,13 @@
 package org.emini.harness.build;
 
+import java.util.ArrayList;
 import java.util.IdentityHashMap;
+import java.util.List;
 import java.util.Map;
 import org.emini.harness.scenario.ShapeSpec;
+import org.emini.shape.Circle;
+import org.emini.shape.MultiShape;
+import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 
 /**
@@ -40,8 +45,47 @@ final class ShapeFactory {
                 }
                 return Shape.createPolygon(xy);
             }
+            case multiShape: {
+                List<Shape> leaves = new ArrayList<>();
+                for (ShapeSpec.Part part : spec.parts()) {
+                    addParts(part.shape(), part.offsetX(), part.offsetY(), part.angle(), leaves);
+                }
+                return new MultiShape(leaves.toArray(new Shape[0]));
+            }
             default:
-                throw new UnsupportedElementException("shape type multiShape", spec.path());
+                throw new UnsupportedElementException("shape type " + spec.kind(), spec.path());
         }
+    }
+
+    /**
+     * Adds a multi-shape part, placed in the multi-shape's frame: turned by {@code angle} about its
+     * origin, then moved by (dx, dy). A part that is itself a multi-shape gives its own parts, composed.
+     * Each part keeps its own mass (the multi-shape's mass is their sum, unless the scene gives one).
+     */
+    private static void addParts(ShapeSpec spec, double dx, double dy, double angle, List<Shape> out)
+            throws UnsupportedElementException {
+        double c = Math.cos(angle), s = Math.sin(angle);
+        if (spec.kind() == ShapeSpec.Kind.multiShape) {
+            for (ShapeSpec.Part p : spec.parts()) {
+                addParts(p.shape(), dx + c * p.offsetX() - s * p.offsetY(), dy + s * p.offsetX() + c * p.offsetY(),
+                    angle + p.angle(), out);
+            }
+            return;
+        }
+        Shape part;
+        if (spec.kind() == ShapeSpec.Kind.circle) {
+            part = new Circle((float) spec.radius(), (float) dx, (float) dy);
+        } else {
+            Polygon local = (Polygon) create(spec);
+            float[] xy = new float[2 * local.getVertexCount()];
+            for (int i = 0; i < local.getVertexCount(); i++) {
+                double x = local.getVertexX(i), y = local.getVertexY(i);
+                xy[2 * i] = (float) (dx + c * x - s * y);
+                xy[2 * i + 1] = (float) (dy + s * x + c * y);
+            }
+            part = dx == 0 && dy == 0 && angle == 0 ? local : new Polygon(xy);
+        }
+        part.setMass((float) spec.mass());
+        out.add(part);
     }
 }
