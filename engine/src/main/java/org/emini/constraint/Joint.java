@@ -2,6 +2,7 @@ package org.emini.constraint;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.SolverStep;
+import org.emini.internal.Check;
 import org.emini.math.EMath;
 
 /**
@@ -70,8 +71,8 @@ public final class Joint extends TwoBodyConstraint {
      * @return the joint (not yet added to the world)
      */
     public static Joint atWorldPoint(Body a, Body b, float x, float y, boolean fixed) {
-        Require.finite("Joint.atWorldPoint", "x", x);
-        Require.finite("Joint.atWorldPoint", "y", y);
+        Check.finite("Joint.atWorldPoint", "x", x);
+        Check.finite("Joint.atWorldPoint", "y", y);
         Require.inWorld("Joint.atWorldPoint", "body a", a);
         Require.inWorld("Joint.atWorldPoint", "body b", b);
         return new Joint(a, b, a.toLocalX(x, y), a.toLocalY(x, y), b.toLocalX(x, y), b.toLocalY(x, y), fixed);

@@ -3,6 +3,7 @@ package org.emini.constraint;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.SolverStep;
+import org.emini.internal.Check;
 import org.emini.math.EMath;
 
 /**
@@ -107,8 +108,8 @@ public final class Motor implements Constraint {
      * @param vy the target y velocity (px/s)
      */
     public void setTargetVelocity(float vx, float vy) {
-        targetX = Require.finite("Motor.setTargetVelocity", "vx", vx);
-        targetY = Require.finite("Motor.setTargetVelocity", "vy", vy);
+        targetX = Check.finite("Motor.setTargetVelocity", "vx", vx);
+        targetY = Check.finite("Motor.setTargetVelocity", "vy", vy);
         speed = EMath.sqrt(vx * vx + vy * vy);
         dirX = speed > 0f ? vx / speed : 0f;
         dirY = speed > 0f ? vy / speed : 0f;
@@ -124,7 +125,7 @@ public final class Motor implements Constraint {
      * @param omega the target ω (rad/s)
      */
     public void setTargetAngularVelocity(float omega) {
-        targetAngular = Require.finite("Motor.setTargetAngularVelocity", "omega", omega);
+        targetAngular = Check.finite("Motor.setTargetAngularVelocity", "omega", omega);
         if (!rotational) {
             rotational = true;
             clearImpulses();
@@ -173,7 +174,7 @@ public final class Motor implements Constraint {
      * @param maxForce the limit, &ge; 0; Float.POSITIVE_INFINITY for no limit
      */
     public void setMaxForce(float maxForce) {
-        this.maxForce = Require.limit("Motor.setMaxForce", "maxForce", maxForce);
+        this.maxForce = Check.limit("Motor.setMaxForce", "maxForce", maxForce);
     }
 
     /**

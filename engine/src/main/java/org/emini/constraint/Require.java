@@ -1,35 +1,10 @@
 package org.emini.constraint;
 
 import org.emini.dynamics.Body;
-import org.emini.math.EMath;
 
-/** Argument checks that name the call and the bad value. */
+/** The check every constraint makes of its bodies (number checks: {@link org.emini.internal.Check}). */
 final class Require {
     private Require() {
-    }
-
-    static float finite(String where, String what, float value) {
-        if (!EMath.isFinite(value)) {
-            throw new IllegalArgumentException(where + ": " + what + " must be a finite number, was " + value);
-        }
-        return value;
-    }
-
-    static float nonNegative(String where, String what, float value) {
-        finite(where, what, value);
-        if (value < 0f) {
-            throw new IllegalArgumentException(where + ": " + what + " must be >= 0, was " + value);
-        }
-        return value;
-    }
-
-    /** A limit: at least 0, and positive infinity means none. */
-    static float limit(String where, String what, float value) {
-        if (!(value >= 0f)) {
-            throw new IllegalArgumentException(where + ": " + what
-                + " must be >= 0 (Float.POSITIVE_INFINITY for no limit), was " + value);
-        }
-        return value;
     }
 
     static Body inWorld(String where, String what, Body body) {

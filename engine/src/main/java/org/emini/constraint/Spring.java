@@ -2,6 +2,7 @@ package org.emini.constraint;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.SolverStep;
+import org.emini.internal.Check;
 import org.emini.math.EMath;
 
 /**
@@ -77,7 +78,7 @@ public final class Spring extends TwoBodyConstraint {
      */
     public Spring(Body a, Body b, float ax, float ay, float bx, float by, float restLength) {
         super("Spring", a, b, ax, ay, bx, by);
-        this.restLength = Require.nonNegative("Spring", "restLength", restLength);
+        this.restLength = Check.nonNegative("Spring", "restLength", restLength);
     }
 
     /**
@@ -95,7 +96,7 @@ public final class Spring extends TwoBodyConstraint {
      * @param length d₀ (px), &ge; 0
      */
     public void setRestLength(float length) {
-        restLength = Require.nonNegative("Spring.setRestLength", "length", length);
+        restLength = Check.nonNegative("Spring.setRestLength", "length", length);
     }
 
     /**
@@ -124,7 +125,7 @@ public final class Spring extends TwoBodyConstraint {
      * @param k the coefficient (mass/s², force per px), &ge; 0
      */
     public void setCoefficient(float k) {
-        coefficient = Require.nonNegative("Spring.setCoefficient", "k", k);
+        coefficient = Check.nonNegative("Spring.setCoefficient", "k", k);
         hertz = 0f;
     }
 
@@ -144,7 +145,7 @@ public final class Spring extends TwoBodyConstraint {
      * @param c the damping coefficient (mass/s, force per px/s), &ge; 0
      */
     public void setDamping(float c) {
-        damping = Require.nonNegative("Spring.setDamping", "c", c);
+        damping = Check.nonNegative("Spring.setDamping", "c", c);
     }
 
     /**
@@ -155,8 +156,8 @@ public final class Spring extends TwoBodyConstraint {
      * @param dampingRatio the damping ratio, &ge; 0 (1 is critical)
      */
     public void setFrequency(float hertz, float dampingRatio) {
-        this.hertz = Require.nonNegative("Spring.setFrequency", "hertz", hertz);
-        this.dampingRatio = Require.nonNegative("Spring.setFrequency", "dampingRatio", dampingRatio);
+        this.hertz = Check.nonNegative("Spring.setFrequency", "hertz", hertz);
+        this.dampingRatio = Check.nonNegative("Spring.setFrequency", "dampingRatio", dampingRatio);
         coefficient = 0f;
     }
 

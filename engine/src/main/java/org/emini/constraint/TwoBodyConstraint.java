@@ -3,6 +3,7 @@ package org.emini.constraint;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.SolverStep;
+import org.emini.internal.Check;
 
 /**
  * What joints and springs share: two bodies, an anchor on each in the body's own frame (it may lie
@@ -63,10 +64,10 @@ public abstract class TwoBodyConstraint implements Constraint {
         }
         bodyA = a;
         bodyB = b;
-        localAX = Require.finite(where, "anchor a x", ax);
-        localAY = Require.finite(where, "anchor a y", ay);
-        localBX = Require.finite(where, "anchor b x", bx);
-        localBY = Require.finite(where, "anchor b y", by);
+        localAX = Check.finite(where, "anchor a x", ax);
+        localAY = Check.finite(where, "anchor a y", ay);
+        localBX = Check.finite(where, "anchor b x", bx);
+        localBY = Check.finite(where, "anchor b y", by);
     }
 
     /** Reads the bodies' solver state at the start of a tick; false when both bodies are fixed. */

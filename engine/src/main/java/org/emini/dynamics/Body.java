@@ -1,5 +1,6 @@
 package org.emini.dynamics;
 
+import org.emini.internal.Check;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 

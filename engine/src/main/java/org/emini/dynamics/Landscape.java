@@ -4,6 +4,7 @@ import java.util.Arrays;
 import org.emini.collision.QueryCallback;
 import org.emini.collision.Segment;
 import org.emini.collision.StaticAabbTree;
+import org.emini.internal.Check;
 import org.emini.math.EMath;
 
 /**

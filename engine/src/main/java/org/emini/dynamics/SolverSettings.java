@@ -1,5 +1,6 @@
 package org.emini.dynamics;
 
+import org.emini.internal.Check;
 /**
  * Tuning of the contact solver and collision margins. Every value has a unit and a stated origin.
  *

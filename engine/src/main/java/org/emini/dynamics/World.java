@@ -3,6 +3,7 @@ package org.emini.dynamics;
 import org.emini.collision.BroadPhase;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
+import org.emini.internal.Check;
 import org.emini.particle.ParticleEmitter;
 import org.emini.particle.ParticleSystem;
 

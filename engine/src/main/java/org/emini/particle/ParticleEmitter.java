@@ -1,6 +1,7 @@
 package org.emini.particle;
 
 import org.emini.dynamics.Body;
+import org.emini.internal.Check;
 import org.emini.math.EMath;
 
 /**
@@ -196,8 +197,8 @@ public final class ParticleEmitter {
      * @param deviation the full width of the deviation, &ge; 0
      */
     public void setCreationRate(float rate, float deviation) {
-        this.rate = nonNegative("ParticleEmitter.setCreationRate", "rate", rate);
-        rateDeviation = nonNegative("ParticleEmitter.setCreationRate", "deviation", deviation);
+        this.rate = Check.nonNegative("ParticleEmitter.setCreationRate", "rate", rate);
+        rateDeviation = Check.nonNegative("ParticleEmitter.setCreationRate", "deviation", deviation);
     }
 
     /**
@@ -226,8 +227,8 @@ public final class ParticleEmitter {
      * @param deviation the full width of the deviation (s), &ge; 0
      */
     public void setLifetime(float seconds, float deviation) {
-        lifetime = positive("ParticleEmitter.setLifetime", "seconds", seconds);
-        lifetimeDeviation = nonNegative("ParticleEmitter.setLifetime", "deviation", deviation);
+        lifetime = Check.positive("ParticleEmitter.setLifetime", "seconds", seconds);
+        lifetimeDeviation = Check.nonNegative("ParticleEmitter.setLifetime", "deviation", deviation);
     }
 
     /**
@@ -256,8 +257,8 @@ public final class ParticleEmitter {
      * @param deviation the full width of the deviation (px/s), &ge; 0
      */
     public void setSpeed(float speed, float deviation) {
-        this.speed = finite("ParticleEmitter.setSpeed", "speed", speed);
-        speedDeviation = nonNegative("ParticleEmitter.setSpeed", "deviation", deviation);
+        this.speed = Check.finite("ParticleEmitter.setSpeed", "speed", speed);
+        speedDeviation = Check.nonNegative("ParticleEmitter.setSpeed", "deviation", deviation);
     }
 
     /**
@@ -286,8 +287,8 @@ public final class ParticleEmitter {
      * @param deviation the full width of the deviation (rad), &ge; 0
      */
     public void setAngle(float radians, float deviation) {
-        angle = finite("ParticleEmitter.setAngle", "radians", radians);
-        angleDeviation = nonNegative("ParticleEmitter.setAngle", "deviation", deviation);
+        angle = Check.finite("ParticleEmitter.setAngle", "radians", radians);
+        angleDeviation = Check.nonNegative("ParticleEmitter.setAngle", "deviation", deviation);
         angleCos = EMath.cos(radians);
         angleSin = EMath.sin(radians);
     }
@@ -311,10 +312,10 @@ public final class ParticleEmitter {
      * @param y2 the second point's y (px)
      */
     public void setEmitSegment(float x1, float y1, float x2, float y2) {
-        emitX1 = finite("ParticleEmitter.setEmitSegment", "x1", x1);
-        emitY1 = finite("ParticleEmitter.setEmitSegment", "y1", y1);
-        emitX2 = finite("ParticleEmitter.setEmitSegment", "x2", x2);
-        emitY2 = finite("ParticleEmitter.setEmitSegment", "y2", y2);
+        emitX1 = Check.finite("ParticleEmitter.setEmitSegment", "x1", x1);
+        emitY1 = Check.finite("ParticleEmitter.setEmitSegment", "y1", y1);
+        emitX2 = Check.finite("ParticleEmitter.setEmitSegment", "x2", x2);
+        emitY2 = Check.finite("ParticleEmitter.setEmitSegment", "y2", y2);
     }
 
     /**
@@ -407,7 +408,7 @@ public final class ParticleEmitter {
      * @param elasticity the elasticity, in [0, 1]
      */
     public void setElasticity(float elasticity) {
-        this.elasticity = unit("ParticleEmitter.setElasticity", "elasticity", elasticity);
+        this.elasticity = Check.unit("ParticleEmitter.setElasticity", "elasticity", elasticity);
     }
 
     /**
@@ -426,7 +427,7 @@ public final class ParticleEmitter {
      * @param factor the factor, finite
      */
     public void setGravityFactor(float factor) {
-        gravityFactor = finite("ParticleEmitter.setGravityFactor", "factor", factor);
+        gravityFactor = Check.finite("ParticleEmitter.setGravityFactor", "factor", factor);
     }
 
     /**
@@ -444,7 +445,7 @@ public final class ParticleEmitter {
      * @param damping the damping, in [0, 1]
      */
     public void setDamping(float damping) {
-        this.damping = unit("ParticleEmitter.setDamping", "damping", damping);
+        this.damping = Check.unit("ParticleEmitter.setDamping", "damping", damping);
     }
 
     /**
@@ -777,33 +778,5 @@ public final class ParticleEmitter {
             throw new IllegalArgumentException(where + ": maxParticles must be > 0, was " + max);
         }
         return max;
-    }
-
-    private static float finite(String where, String what, float value) {
-        if (!EMath.isFinite(value)) {
-            throw new IllegalArgumentException(where + ": " + what + " must be a finite number, was " + value);
-        }
-        return value;
-    }
-
-    private static float nonNegative(String where, String what, float value) {
-        if (!(finite(where, what, value) >= 0f)) {
-            throw new IllegalArgumentException(where + ": " + what + " must be >= 0, was " + value);
-        }
-        return value;
-    }
-
-    private static float positive(String where, String what, float value) {
-        if (!(finite(where, what, value) > 0f)) {
-            throw new IllegalArgumentException(where + ": " + what + " must be > 0, was " + value);
-        }
-        return value;
-    }
-
-    private static float unit(String where, String what, float value) {
-        if (!(finite(where, what, value) >= 0f && value <= 1f)) {
-            throw new IllegalArgumentException(where + ": " + what + " must be in [0, 1], was " + value);
-        }
-        return value;
     }
 }

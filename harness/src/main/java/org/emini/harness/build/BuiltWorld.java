@@ -6,12 +6,14 @@ import java.util.Map;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.World;
 import org.emini.harness.scenario.Scenario;
+import org.emini.particle.ParticleEmitter;
 
 /** An engine world built from a scene, with its bodies by scene name (in creation order). */
 public final class BuiltWorld {
     private final Scenario scenario;
     private final World world;
     private final Map<String, Body> bodies = new LinkedHashMap<>();
+    private final Map<String, ParticleEmitter> emitters = new LinkedHashMap<>();
 
     BuiltWorld(Scenario scenario, World world) {
         this.scenario = scenario;
@@ -20,6 +22,10 @@ public final class BuiltWorld {
 
     void add(String name, Body body) {
         bodies.put(name, body);
+    }
+
+    void addEmitter(String name, ParticleEmitter emitter) {
+        emitters.put(name, emitter);
     }
 
     /** The scene it was built from. */
@@ -44,5 +50,10 @@ public final class BuiltWorld {
             throw new IllegalArgumentException("no body named " + name);
         }
         return b;
+    }
+
+    /** Particle emitters by scene name (ElementNames.emitter), in the order of {@code particles}. */
+    public Map<String, ParticleEmitter> emitters() {
+        return Collections.unmodifiableMap(emitters);
     }
 }

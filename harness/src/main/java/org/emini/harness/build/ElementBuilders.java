@@ -18,7 +18,7 @@ final class ElementBuilders {
         builders.put("joints", new ConstraintBuilders.Joints());
         builders.put("springs", new ConstraintBuilders.Springs());
         builders.put("motors", new ConstraintBuilders.Motors());
-        builders.put("particles", new NotYetInEngine("particles"));
+        builders.put("particles", new ParticleBuilder());
         return builders;
     }
 }

@@ -12,6 +12,7 @@ import org.emini.harness.scenario.ActionSpec;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.BodyState;
 import org.emini.harness.scenario.Channels;
+import org.emini.harness.scenario.ElementNames;
 import org.emini.harness.scenario.ExpectationSpec;
 import org.emini.harness.scenario.GeneratorSpec;
 import org.emini.harness.scenario.KnownFailure;
@@ -91,6 +92,16 @@ final class ScenarioReader {
             if (root.has(section)) {
                 elements.put(section, new Section(root.get(section), r.key(section)));
                 checkBodyRefs(root.get(section), r.key(section), names);
+            }
+        }
+        Set<String> emitters = new HashSet<>();
+        JsonNode particles = root.get("particles");
+        if (particles != null) {
+            for (int i = 0; i < particles.size(); i++) {
+                if (!emitters.add(ElementNames.emitter(particles.get(i), i))) {
+                    problem(r.key("particles").index(i), "duplicate emitter name '"
+                            + ElementNames.emitter(particles.get(i), i) + "'");
+                }
             }
         }
         JsonNode worldNode = root.get("world");
