@@ -6,13 +6,20 @@ import java.util.List;
 import java.util.Map;
 import org.emini.harness.scenario.ShapeSpec;
 import org.emini.shape.Circle;
-import org.emini.shape.MultiShape;
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 
 /**
  * Makes engine shapes from shape specs. A named shape becomes one engine shape shared by all its
  * bodies, as a program using the engine would do.
+ *
+ * <p>A multi-shape becomes an engine {@code MultiShape} whose parts are placed in its frame: each part
+ * rotated by its {@code angle}, then moved by its {@code offset} (a circle by its centre, a polygon
+ * vertex by vertex); a part that is itself a multi-shape gives its own parts, placed through both. Each
+ * part weighs its own mass, scaled so that a nested multi-shape's parts add up to that multi-shape's
+ * mass; the whole then gets the multi-shape's mass (by default the sum of its parts). The body rotates
+ * about the frame's origin, which the scene states is the centre of mass: the parts are not moved to
+ * their centroid.
  */
 final class ShapeFactory {
     private final Map<ShapeSpec, Shape> made = new IdentityHashMap<>();
@@ -20,7 +27,7 @@ final class ShapeFactory {
     Shape shape(ShapeSpec spec) throws UnsupportedElementException {
         Shape shape = made.get(spec);
         if (shape == null) {
-            shape = create(spec);
+            shape = spec.kind() == ShapeSpec.Kind.multiShape ? multi(spec) : create(spec);
             shape.setMass((float) spec.mass());
             shape.setFriction((float) spec.friction());
             shape.setElasticity((float) spec.elasticity());
@@ -29,7 +36,7 @@ final class ShapeFactory {
         return shape;
     }
 
-    private static Shape create(ShapeSpec spec) throws UnsupportedElementException {
+    private static Shape create(ShapeSpec spec) {
         switch (spec.kind()) {
             case circle:
                 return Shape.createCircle((float) spec.radius());
@@ -37,7 +44,7 @@ final class ShapeFactory {
                 return Shape.createRectangle((float) spec.width(), (float) spec.height());
             case regularPolygon:
                 return Shape.createRegularPolygon((float) spec.radius(), spec.sides());
-            case polygon: {
+            default: {
                 float[] xy = new float[spec.vertices().size() * 2];
                 for (int i = 0; i < spec.vertices().size(); i++) {
                     xy[2 * i] = (float) spec.vertices().get(i)[0];
@@ -45,47 +52,49 @@ final class ShapeFactory {
                 }
                 return Shape.createPolygon(xy);
             }
-            case multiShape: {
-                List<Shape> leaves = new ArrayList<>();
-                for (ShapeSpec.Part part : spec.parts()) {
-                    addParts(part.shape(), part.offsetX(), part.offsetY(), part.angle(), leaves);
-                }
-                return new MultiShape(leaves.toArray(new Shape[0]));
-            }
-            default:
-                throw new UnsupportedElementException("shape type " + spec.kind(), spec.path());
         }
     }
 
-    /**
-     * Adds a multi-shape part, placed in the multi-shape's frame: turned by {@code angle} about its
-     * origin, then moved by (dx, dy). A part that is itself a multi-shape gives its own parts, composed.
-     * Each part keeps its own mass (the multi-shape's mass is their sum, unless the scene gives one).
-     */
-    private static void addParts(ShapeSpec spec, double dx, double dy, double angle, List<Shape> out)
-            throws UnsupportedElementException {
-        double c = Math.cos(angle), s = Math.sin(angle);
+    private static Shape multi(ShapeSpec spec) {
+        List<Shape> parts = new ArrayList<>();
+        place(spec, 0, 0, 0, 1, parts);
+        return Shape.createMultiShape(parts.toArray(new Shape[0]));
+    }
+
+    /** Adds the convex parts of a shape placed by (ox, oy, angle), masses times scale. */
+    private static void place(ShapeSpec spec, double ox, double oy, double angle, double scale, List<Shape> out) {
         if (spec.kind() == ShapeSpec.Kind.multiShape) {
+            double total = 0;
             for (ShapeSpec.Part p : spec.parts()) {
-                addParts(p.shape(), dx + c * p.offsetX() - s * p.offsetY(), dy + s * p.offsetX() + c * p.offsetY(),
-                    angle + p.angle(), out);
+                total += p.shape().mass();
+            }
+            double inner = total > 0 ? scale * spec.mass() / total : 0;
+            double c = Math.cos(angle);
+            double s = Math.sin(angle);
+            for (ShapeSpec.Part p : spec.parts()) {
+                place(p.shape(), ox + c * p.offsetX() - s * p.offsetY(), oy + s * p.offsetX() + c * p.offsetY(),
+                        angle + p.angle(), inner, out);
             }
             return;
         }
-        Shape part;
-        if (spec.kind() == ShapeSpec.Kind.circle) {
-            part = new Circle((float) spec.radius(), (float) dx, (float) dy);
+        Shape base = create(spec);
+        Shape placed;
+        double c = Math.cos(angle);
+        double s = Math.sin(angle);
+        if (base instanceof Circle circle) {
+            placed = new Circle(circle.getRadius(), (float) ox, (float) oy);
         } else {
-            Polygon local = (Polygon) create(spec);
-            float[] xy = new float[2 * local.getVertexCount()];
-            for (int i = 0; i < local.getVertexCount(); i++) {
-                double x = local.getVertexX(i), y = local.getVertexY(i);
-                xy[2 * i] = (float) (dx + c * x - s * y);
-                xy[2 * i + 1] = (float) (dy + s * x + c * y);
+            Polygon polygon = (Polygon) base;
+            float[] xy = new float[2 * polygon.getVertexCount()];
+            for (int i = 0; i < polygon.getVertexCount(); i++) {
+                double x = polygon.getVertexX(i);
+                double y = polygon.getVertexY(i);
+                xy[2 * i] = (float) (ox + c * x - s * y);
+                xy[2 * i + 1] = (float) (oy + s * x + c * y);
             }
-            part = dx == 0 && dy == 0 && angle == 0 ? local : new Polygon(xy);
+            placed = Shape.createPolygon(xy);
         }
-        part.setMass((float) spec.mass());
-        out.add(part);
+        placed.setMass((float) (spec.mass() * scale));
+        out.add(placed);
     }
 }
