@@ -29,6 +29,10 @@ import org.emini.harness.scenario.ShapeSpec;
  * {@code slowed}, in that order. Containers and the joint scenes' bodies are not judged against
  * the static bodies' extent.
  *
+ * <p>Particles (Emini's, or the peers' circle bodies standing for them) are judged like rain: a
+ * particle outside the static bodies' horizontal extent or below the top of the lowest static body
+ * escaped; one with a non-finite position is non-finite. Their live count is reported.
+ *
  * @param ticks ticks run before the check
  * @param verdict stable, drifted, collapsed, escaped, stretched, slowed or non-finite
  * @param maxDisplacementPx largest distance of a dynamic body from its initial position (px)
@@ -42,17 +46,37 @@ import org.emini.harness.scenario.ShapeSpec;
  * @param maxJointErrorPx largest distance between the two anchors of a joint (px), 0 without joints
  * @param motorSpeedError |ω − target| / |target| of the motor-driven container, 0 without one
  *     (NaN when the engine gave no angular velocities)
+ * @param particles live particles
  */
 public record Stability(long ticks, String verdict, double maxDisplacementPx, double maxDxPx, double maxDyPx, double bodySize,
                         double maxAngle, double maxSpeed, int escaped, int nonFinite,
-                        double maxJointErrorPx, double motorSpeedError) {
+                        double maxJointErrorPx, double motorSpeedError, int particles) {
 
     /** Largest relative error of a motor-driven container's angular velocity still {@code stable}. */
     public static final double MOTOR_TOLERANCE = 0.05;
 
+    /** Judges poses and angular velocities (scenes without particles). */
+    public static Stability judge(Scenario s, long ticks, double[] initial, double[] now, double[] speeds, double[] omegas) {
+        return judge(s, ticks, initial, now, speeds, omegas, null, 0);
+    }
+
+    /**
+     * What moves in a scene, for the per-body figure: its dynamic bodies plus, for each particle
+     * emitter, the particles it keeps alive (rate × lifetime, at most its pool).
+     */
+    public static long moving(Scenario s) {
+        long n = s.bodies().stream().filter(b -> !b.state().isStatic()).count();
+        if (s.elements().containsKey("particles")) {
+            for (com.fasterxml.jackson.databind.JsonNode e : s.elements().get("particles").node()) {
+                n += Math.min(e.path("maxCount").asInt(100), Math.round(e.path("rate").asDouble(20) * e.path("lifetime").asDouble(2)));
+            }
+        }
+        return n;
+    }
+
     /** Judges poses, without angular velocities (scenes without motors). */
     public static Stability judge(Scenario s, long ticks, double[] initial, double[] now, double[] speeds) {
-        return judge(s, ticks, initial, now, speeds, null);
+        return judge(s, ticks, initial, now, speeds, null, null, 0);
     }
 
     /**
@@ -64,8 +88,11 @@ public record Stability(long ticks, String verdict, double maxDisplacementPx, do
      * @param now poses now
      * @param speeds speeds now (px/s)
      * @param omegas angular velocities now (rad/s, scene sense), or null
+     * @param particleXy x, y (px) of each live particle, or null
+     * @param particleCount live particles
      */
-    public static Stability judge(Scenario s, long ticks, double[] initial, double[] now, double[] speeds, double[] omegas) {
+    public static Stability judge(Scenario s, long ticks, double[] initial, double[] now, double[] speeds, double[] omegas,
+                                  double[] particleXy, int particleCount) {
         double minX = Double.MAX_VALUE, maxX = -Double.MAX_VALUE, floorTop = -Double.MAX_VALUE;
         double size = 0;
         int container = -1;
@@ -125,6 +152,14 @@ public record Stability(long ticks, String verdict, double maxDisplacementPx, do
                 escaped++;
             }
         }
+        for (int i = 0; i < particleCount; i++) {
+            double x = particleXy[2 * i], y = particleXy[2 * i + 1];
+            if (!Double.isFinite(x) || !Double.isFinite(y)) {
+                nonFinite++;
+            } else if (minX <= maxX && (x < minX || x > maxX || y > floorTop)) {
+                escaped++;
+            }
+        }
         double jointError = jointError(s, initial, now);
         double motorError = 0;
         if (container >= 0) {
@@ -156,7 +191,8 @@ public record Stability(long ticks, String verdict, double maxDisplacementPx, do
         } else {
             verdict = escaped == 0 ? "stable" : "escaped";
         }
-        return new Stability(ticks, verdict, maxD, maxDx, maxDy, size, maxA, maxV, escaped, nonFinite, jointError, motorError);
+        return new Stability(ticks, verdict, maxD, maxDx, maxDy, size, maxA, maxV, escaped, nonFinite, jointError, motorError,
+            particleCount);
     }
 
     private static int index(Scenario s, String name) {

@@ -18,6 +18,7 @@ final class Dyn4jEngine implements BenchEngine {
     private World<Body> world;
     private Body[] bodies;
     private PeerScene scene;
+    private PeerParticles<Body> particles;
 
     @Override
     public String id() {
@@ -66,6 +67,7 @@ final class Dyn4jEngine implements BenchEngine {
             world.addBody(b);
             bodies[i++] = b;
         }
+        particles = new PeerParticles<>(scene.emitters, new Particles());
         for (int k = 0; k < scene.joints.size(); k++) {
             PeerScene.PeerJoint pj = scene.joints.get(k);
             Vector2 at = new Vector2(pj.x, pj.y);
@@ -98,9 +100,54 @@ final class Dyn4jEngine implements BenchEngine {
         r.setMaximumMotorTorque(pm.maxTorque);
     }
 
+    /** Particles as small circle bodies meeting the scene's bodies only (a category filter). */
+    private final class Particles implements PeerParticles.Physics<Body> {
+        @Override
+        public Body create(PeerScene.PeerEmitter e, double x, double y, double vx, double vy) {
+            Body b = new Body();
+            org.dyn4j.dynamics.BodyFixture f = b.addFixture(Geometry.createCircle(PeerScene.PARTICLE_RADIUS), 1.0, 0.0, e.restitution);
+            f.setFilter(new org.dyn4j.collision.CategoryFilter(PeerScene.PARTICLE_CATEGORY, e.collide ? PeerScene.PARTICLE_MASK : 0));
+            b.setMass(MassType.FIXED_ANGULAR_VELOCITY);
+            b.translate(x, y);
+            b.setLinearVelocity(vx, vy);
+            b.setGravityScale(e.gravityScale);
+            b.setAtRestDetectionEnabled(false);
+            world.addBody(b);
+            return b;
+        }
+
+        @Override
+        public void destroy(Body b) {
+            world.removeBody(b);
+        }
+
+        @Override
+        public double x(Body b) {
+            return b.getTransform().getTranslationX();
+        }
+
+        @Override
+        public double y(Body b) {
+            return b.getTransform().getTranslationY();
+        }
+    }
+
     @Override
     public void tick() {
+        if (particles.any()) {
+            particles.beforeStep(scene.timestep);
+        }
         world.step(1);
+    }
+
+    @Override
+    public int particleCount() {
+        return particles.count();
+    }
+
+    @Override
+    public void particlePositions(double[] out) {
+        particles.positions(out);
     }
 
     @Override
@@ -139,7 +186,7 @@ final class Dyn4jEngine implements BenchEngine {
         return "metres (20 px = 1 m); timestep " + s.getStepFrequency() + " s; "
             + s.getVelocityConstraintSolverIterations() + " velocity + " + s.getPositionConstraintSolverIterations()
             + " position iterations (defaults); continuous detection " + s.getContinuousDetectionMode()
-            + "; at-rest detection off";
+            + "; at-rest detection off" + (particles.any() ? "; " + JBox2dEngine.PARTICLES : "");
     }
 
     @Override

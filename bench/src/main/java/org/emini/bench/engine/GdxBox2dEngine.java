@@ -22,6 +22,7 @@ final class GdxBox2dEngine implements BenchEngine {
     private World world;
     private Body[] bodies;
     private float dt;
+    private PeerParticles<Body> particles;
 
     @Override
     public String id() {
@@ -59,6 +60,7 @@ final class GdxBox2dEngine implements BenchEngine {
             }
             bodies[i++] = b;
         }
+        particles = new PeerParticles<>(scene.emitters, new Particles());
         for (int k = 0; k < scene.joints.size(); k++) {
             PeerScene.PeerJoint pj = scene.joints.get(k);
             if (pj.fixed) {
@@ -82,6 +84,51 @@ final class GdxBox2dEngine implements BenchEngine {
         }
     }
 
+    /** Particles as small circle bodies meeting the scene's bodies only (categories and masks). */
+    private final class Particles implements PeerParticles.Physics<Body> {
+        private final CircleShape circle = new CircleShape();
+        private final BodyDef def = new BodyDef();
+        private final FixtureDef fd = new FixtureDef();
+
+        Particles() {
+            circle.setRadius((float) PeerScene.PARTICLE_RADIUS);
+            def.type = BodyDef.BodyType.DynamicBody;
+            def.fixedRotation = true;
+            def.allowSleep = false;
+            fd.shape = circle;
+            fd.density = 1f;
+            fd.friction = 0f;
+            fd.filter.categoryBits = (short) PeerScene.PARTICLE_CATEGORY;
+        }
+
+        @Override
+        public Body create(PeerScene.PeerEmitter e, double x, double y, double vx, double vy) {
+            def.position.set((float) x, (float) y);
+            def.linearVelocity.set((float) vx, (float) vy);
+            def.gravityScale = (float) e.gravityScale;
+            Body b = world.createBody(def);
+            fd.restitution = (float) e.restitution;
+            fd.filter.maskBits = (short) (e.collide ? PeerScene.PARTICLE_MASK : 0);
+            b.createFixture(fd);
+            return b;
+        }
+
+        @Override
+        public void destroy(Body b) {
+            world.destroyBody(b);
+        }
+
+        @Override
+        public double x(Body b) {
+            return b.getPosition().x;
+        }
+
+        @Override
+        public double y(Body b) {
+            return b.getPosition().y;
+        }
+    }
+
     private static Shape shape(PeerScene.PeerShape sh) {
         if (sh.circle) {
             CircleShape c = new CircleShape();
@@ -100,7 +147,20 @@ final class GdxBox2dEngine implements BenchEngine {
 
     @Override
     public void tick() {
+        if (particles.any()) {
+            particles.beforeStep(dt);
+        }
         world.step(dt, JBox2dEngine.VELOCITY_ITERATIONS, JBox2dEngine.POSITION_ITERATIONS);
+    }
+
+    @Override
+    public int particleCount() {
+        return particles.count();
+    }
+
+    @Override
+    public void particlePositions(double[] out) {
+        particles.positions(out);
     }
 
     @Override
@@ -136,7 +196,8 @@ final class GdxBox2dEngine implements BenchEngine {
     @Override
     public String settings() {
         return "metres (20 px = 1 m); timestep " + dt + " s; " + JBox2dEngine.VELOCITY_ITERATIONS + " velocity + "
-            + JBox2dEngine.POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off; native Box2D 2.3.1 via JNI";
+            + JBox2dEngine.POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off; native Box2D 2.3.1 via JNI"
+            + (particles.any() ? "; " + JBox2dEngine.PARTICLES : "");
     }
 
     @Override

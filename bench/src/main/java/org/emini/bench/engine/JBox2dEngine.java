@@ -23,9 +23,14 @@ final class JBox2dEngine implements BenchEngine {
     /** Box2D's recommended position iterations. */
     static final int POSITION_ITERATIONS = 3;
 
+    /** How the peers make particles, for the settings line. */
+    static final String PARTICLES = "particles as circle bodies of 0.1 m, fixed rotation, no friction, meeting the scene's "
+        + "bodies but not each other (collision filter), created as emitted and destroyed when their lifetime ends";
+
     private World world;
     private Body[] bodies;
     private float dt;
+    private PeerParticles<Body> particles;
 
     @Override
     public String id() {
@@ -61,6 +66,7 @@ final class JBox2dEngine implements BenchEngine {
             }
             bodies[i++] = b;
         }
+        particles = new PeerParticles<>(scene.emitters, new Particles());
         for (int k = 0; k < scene.joints.size(); k++) {
             PeerScene.PeerJoint pj = scene.joints.get(k);
             if (pj.fixed) {
@@ -84,6 +90,51 @@ final class JBox2dEngine implements BenchEngine {
         }
     }
 
+    /** Particles as small circle bodies meeting the scene's bodies only (categories and masks). */
+    private final class Particles implements PeerParticles.Physics<Body> {
+        private final CircleShape circle = new CircleShape();
+        private final BodyDef def = new BodyDef();
+        private final FixtureDef fd = new FixtureDef();
+
+        Particles() {
+            circle.m_radius = (float) PeerScene.PARTICLE_RADIUS;
+            def.type = BodyType.DYNAMIC;
+            def.fixedRotation = true;
+            def.allowSleep = false;
+            fd.shape = circle;
+            fd.density = 1f;
+            fd.friction = 0f;
+            fd.filter.categoryBits = PeerScene.PARTICLE_CATEGORY;
+        }
+
+        @Override
+        public Body create(PeerScene.PeerEmitter e, double x, double y, double vx, double vy) {
+            def.position.set((float) x, (float) y);
+            def.linearVelocity.set((float) vx, (float) vy);
+            def.gravityScale = (float) e.gravityScale;
+            Body b = world.createBody(def);
+            fd.restitution = (float) e.restitution;
+            fd.filter.maskBits = e.collide ? PeerScene.PARTICLE_MASK : 0;
+            b.createFixture(fd);
+            return b;
+        }
+
+        @Override
+        public void destroy(Body b) {
+            world.destroyBody(b);
+        }
+
+        @Override
+        public double x(Body b) {
+            return b.getPosition().x;
+        }
+
+        @Override
+        public double y(Body b) {
+            return b.getPosition().y;
+        }
+    }
+
     private static Shape shape(PeerScene.PeerShape sh) {
         if (sh.circle) {
             CircleShape c = new CircleShape();
@@ -102,7 +153,20 @@ final class JBox2dEngine implements BenchEngine {
 
     @Override
     public void tick() {
+        if (particles.any()) {
+            particles.beforeStep(dt);
+        }
         world.step(dt, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    }
+
+    @Override
+    public int particleCount() {
+        return particles.count();
+    }
+
+    @Override
+    public void particlePositions(double[] out) {
+        particles.positions(out);
     }
 
     @Override
@@ -138,7 +202,8 @@ final class JBox2dEngine implements BenchEngine {
     @Override
     public String settings() {
         return "metres (20 px = 1 m); timestep " + dt + " s; " + VELOCITY_ITERATIONS + " velocity + "
-            + POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off";
+            + POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off"
+            + (particles.any() ? "; " + PARTICLES : "");
     }
 
     @Override

@@ -30,6 +30,61 @@ final class PeerScene {
     final List<PeerBody> bodies = new ArrayList<>();
     final List<PeerJoint> joints = new ArrayList<>();
     final List<PeerMotor> motors = new ArrayList<>();
+    final List<PeerEmitter> emitters = new ArrayList<>();
+
+    /** Radius of a particle's circle body (m): 2 px, a tenth of a metre. */
+    static final double PARTICLE_RADIUS = 2 / PX_PER_M;
+    /** Collision category of particle bodies; scene bodies keep category 1. */
+    static final int PARTICLE_CATEGORY = 0x0002;
+    /** What particle bodies meet: the scene's bodies (category 1), never each other. */
+    static final int PARTICLE_MASK = 0x0001;
+
+    /**
+     * A particle emitter fixed in the world, in metres, y up, for engines without particles: its
+     * particles become small circle bodies (see {@link PeerParticles}). Angles counter-clockwise
+     * from +x; spreads are the full widths of uniform deviations, as in the scene.
+     */
+    static final class PeerEmitter {
+        final double x1;
+        final double y1;
+        final double x2;
+        final double y2;
+        final int maxCount;
+        final double rate;
+        final double rateSpread;
+        final double lifetime;
+        final double lifetimeSpread;
+        final double speed;
+        final double speedSpread;
+        final double angle;
+        final double angleSpread;
+        final double restitution;
+        final double gravityScale;
+        final boolean collide;
+        final long seed;
+
+        PeerEmitter(com.fasterxml.jackson.databind.JsonNode n, int index) {
+            com.fasterxml.jackson.databind.JsonNode from = n.get("from");
+            com.fasterxml.jackson.databind.JsonNode to = n.has("to") ? n.get("to") : from;
+            x1 = from.get(0).asDouble() / PX_PER_M;
+            y1 = -from.get(1).asDouble() / PX_PER_M;
+            x2 = to.get(0).asDouble() / PX_PER_M;
+            y2 = -to.get(1).asDouble() / PX_PER_M;
+            maxCount = n.path("maxCount").asInt(100);
+            rate = n.path("rate").asDouble(20);
+            rateSpread = n.path("rateSpread").asDouble(0);
+            lifetime = n.path("lifetime").asDouble(2);
+            lifetimeSpread = n.path("lifetimeSpread").asDouble(0);
+            speed = n.path("speed").asDouble(10) / PX_PER_M;
+            speedSpread = n.path("speedSpread").asDouble(0) / PX_PER_M;
+            angle = -Math.toRadians(n.path("angleDeg").asDouble(0));
+            angleSpread = Math.toRadians(n.path("angleSpreadDeg").asDouble(0));
+            restitution = n.path("elasticity").asDouble(1);
+            gravityScale = n.path("gravityFactor").asDouble(1);
+            collide = n.path("collide").asBoolean(true);
+            seed = n.has("seed") ? n.get("seed").asLong() : 0x5DEECE66DL + index;
+        }
+    }
 
     /**
      * A pin joint (revolute) or, when fixed, a weld, at one world point (m, y up) of the start pose.
@@ -157,7 +212,7 @@ final class PeerScene {
      */
     static PeerScene of(Scenario s, String engine, int maxVertices) throws UnsupportedSceneException {
         for (String element : s.elements().keySet()) {
-            if (!"joints".equals(element) && !"motors".equals(element)) {
+            if (!"joints".equals(element) && !"motors".equals(element) && !"particles".equals(element)) {
                 throw new UnsupportedSceneException("the " + engine + " adapter does not build " + element + " yet");
             }
         }
@@ -211,6 +266,18 @@ final class PeerScene {
         if (s.elements().containsKey("motors")) {
             for (com.fasterxml.jackson.databind.JsonNode m : s.elements().get("motors").node()) {
                 p.motors.add(motor(s, p, m, engine));
+            }
+        }
+        if (s.elements().containsKey("particles")) {
+            int i = 0;
+            for (com.fasterxml.jackson.databind.JsonNode n : s.elements().get("particles").node()) {
+                if (n.has("body")) {
+                    throw new UnsupportedSceneException("the " + engine + " adapter emits particles from fixed points only");
+                }
+                if (n.path("damping").asDouble(0) != 0) {
+                    throw new UnsupportedSceneException("the " + engine + " adapter does not map particle damping");
+                }
+                p.emitters.add(new PeerEmitter(n, i++));
             }
         }
         return p;

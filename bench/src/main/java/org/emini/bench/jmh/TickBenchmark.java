@@ -88,7 +88,7 @@ public class TickBenchmark {
         record.put("scene", scene);
         record.put("engine", engine);
         record.put("bodies", n);
-        record.put("dynamicBodies", scenario.bodies().stream().filter(b -> !b.state().isStatic()).count());
+        record.put("dynamicBodies", Stability.moving(scenario));
         record.put("settings", e.settings());
         record.put("buildMillis", (t1 - t0) / 1e6);
         record.put("prerollTicks", p);
@@ -146,7 +146,10 @@ public class TickBenchmark {
         e.poses(now);
         e.speeds(speeds);
         e.angularVelocities(omegas);
-        return Stability.judge(scenario, ticks, initial, now, speeds, omegas);
+        int np = e.particleCount();
+        double[] particles = new double[2 * np];
+        e.particlePositions(particles);
+        return Stability.judge(scenario, ticks, initial, now, speeds, omegas, particles, np);
     }
 
     private void write() {

@@ -198,6 +198,10 @@ public final class HtmlPage {
         if (je instanceof Number && ((Number) je).doubleValue() > 0) {
             s.append(", joint error ").append(num(je, "%.2f")).append(" px");
         }
+        Object np = c.get("particles");
+        if (np instanceof Number && ((Number) np).intValue() > 0) {
+            s.append(", ").append(num(np, "%.0f")).append(" particles");
+        }
         Object me = c.get("motorSpeedError");
         if (me instanceof Number && ((Number) me).doubleValue() != 0) {
             s.append(", container ω off by ").append(num(((Number) me).doubleValue() * 100, "%.1f")).append("%");

@@ -128,6 +128,9 @@ public final class MarkdownTables {
         if (num(c.get("escaped")) > 0) {
             s.append(String.format(Locale.ROOT, ", %.0f escaped", num(c.get("escaped"))));
         }
+        if (num(c.get("particles")) > 0) {
+            s.append(String.format(Locale.ROOT, ", %.0f particles", num(c.get("particles"))));
+        }
         if (c.get("motorSpeedError") instanceof Number && num(c.get("motorSpeedError")) != 0) {
             s.append(String.format(Locale.ROOT, ", container ω off by %.1f%%", num(c.get("motorSpeedError")) * 100));
         }

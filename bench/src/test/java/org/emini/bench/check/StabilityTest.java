@@ -98,4 +98,19 @@ class StabilityTest {
         now[3 * 1] += 3;
         assertEquals("stretched", Stability.judge(s, 1, poses(s), now, new double[n], omegas).verdict());
     }
+
+    @Test
+    void particlesAreCountedAndJudgedLikeRain() {
+        Scenario s = SCENES.load("bench/particles-10000");
+        double[] now = poses(s);
+        double[] xy = {0, -5, 100, -300, -590, -1};
+        Stability st = Stability.judge(s, 1, poses(s), now, new double[s.bodies().size()], null, xy, 3);
+        assertEquals("stable", st.verdict());
+        assertEquals(3, st.particles());
+        xy[3] = 5;
+        assertEquals("escaped", Stability.judge(s, 1, poses(s), now, new double[s.bodies().size()], null, xy, 3).verdict());
+        xy[4] = Double.NaN;
+        assertEquals("non-finite", Stability.judge(s, 1, poses(s), now, new double[s.bodies().size()], null, xy, 3).verdict());
+        assertEquals(10000, Stability.moving(s));
+    }
 }
