@@ -223,10 +223,15 @@ def build(scene: Scene) -> Built:
     if w.simulation_area is not None:
         built.unsupported.append(Note(
             "world.simulationArea", "$.world.simulationArea",
-            "pymunk simulates every body; Emini freezes bodies outside the x range "
-            f"[{w.simulation_area['start']}, {w.simulation_area['end']}] (checked at each sample: see "
-            "affectsBodies)", affects_bodies=False))
+            "pymunk simulates every body; Emini freezes bodies outside " + _area_text(w.simulation_area)
+            + " (checked at each sample: see affectsBodies)", affects_bodies=False))
     return built
+
+
+def _area_text(a):
+    if "min" in a:
+        return f"the rectangle {list(a['min'])}..{list(a['max'])}"
+    return f"the x range [{a['start']}, {a['end']}]"
 
 
 def _no_gravity_velocity(body, gravity, damping, dt):

@@ -83,6 +83,8 @@ class Schedule:
         if a.kind == "gravity":
             built.space.gravity = a.vector
             return
+        if a.kind == "emit":
+            return  # a particle burst; pymunk has no particles, and they never act on bodies
         body = built.bodies[a.body]
         if body.body_type != pymunk.Body.DYNAMIC:
             return  # Emini ignores motion given to a static body
@@ -167,18 +169,25 @@ class _AreaWatch:
     def __init__(self, built: Built):
         self.built = built
         a = built.scene.world.simulation_area
-        self.start, self.end = float(a["start"]), float(a["end"])
+        if "min" in a:
+            (self.min_x, self.min_y), (self.max_x, self.max_y) = a["min"], a["max"]
+        else:
+            self.min_x, self.min_y, self.max_x, self.max_y = float(a["start"]), -math.inf, float(a["end"]), math.inf
         self.left_at = None
 
     def check(self, t):
         if self.left_at is not None:
             return
         for name, body in self.built.dynamic():
-            for s in self.built.shapes[name]:
-                bb = s.cache_bb()
-                if bb.right <= self.start or bb.left >= self.end:
-                    self.left_at = (name, t)
-                    return
+            # Emini simulates a body while its bounding box overlaps the area (touching counts).
+            boxes = [s.cache_bb() for s in self.built.shapes[name]]
+            left = min(bb.left for bb in boxes)
+            right = max(bb.right for bb in boxes)
+            bottom = min(bb.bottom for bb in boxes)
+            top = max(bb.top for bb in boxes)
+            if right < self.min_x or left > self.max_x or top < self.min_y or bottom > self.max_y:
+                self.left_at = (name, t)
+                return
 
     def report(self):
         note = next(n for n in self.built.unsupported if n.element == "world.simulationArea")

@@ -30,6 +30,7 @@ METRIC_CHANNELS = {
     "constraintError": ["constraintError.max", "constraintError.mean"],
     "tunnelling": ["tunnelling.count"],
     "stability": ["stability.maxSpeed", "stability.maxAngularSpeed", "stability.nonFinite"],
+    "particles": ["particles.count", "particles.outside"],
 }
 BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed")
 
@@ -492,6 +493,8 @@ class _Reader:
                     self.problem(f"$.actions[{i}]", "give velocity, angularVelocity or both")
             elif kind == "torque":
                 value = float(a["torque"])
+            elif kind == "emit":
+                value = float(a["count"])  # a particle burst: nothing in pymunk (MAPPING.md, Actions)
             else:
                 value = float(a["angularImpulse"])
             out.append(Action(float(a["at"]), kind, body, vector, _vec(a["point"]) if "point" in a else None,

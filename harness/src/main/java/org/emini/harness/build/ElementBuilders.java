@@ -4,8 +4,9 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
- * The builder of each element section, in build order. When the engine gains an element, replace its
- * {@link NotYetInEngine} entry with the element's builder.
+ * The builder of each element section, in build order (after the world settings, shapes and bodies).
+ * Every section the schema describes has one; a builder meets a key it does not read with an
+ * {@link UnsupportedElementException} ({@link SectionKeys}).
  */
 final class ElementBuilders {
     private ElementBuilders() {
@@ -13,8 +14,8 @@ final class ElementBuilders {
 
     static Map<String, ElementBuilder> all() {
         Map<String, ElementBuilder> builders = new LinkedHashMap<>();
-        builders.put("world.simulationArea", new NotYetInEngine("world.simulationArea"));
-        builders.put("landscape", new NotYetInEngine("landscape"));
+        builders.put("world.simulationArea", new SimulationAreaBuilder());
+        builders.put("landscape", new LandscapeBuilder());
         builders.put("joints", new ConstraintBuilders.Joints());
         builders.put("springs", new ConstraintBuilders.Springs());
         builders.put("motors", new ConstraintBuilders.Motors());

@@ -21,15 +21,14 @@ public final class WorldBuilder {
     /**
      * Builds the world.
      *
-     * @throws UnsupportedElementException if the scene uses an element the engine does not offer yet
+     * @throws UnsupportedElementException if the scene uses something the engine cannot express
      * @throws IllegalArgumentException if the engine refuses a value (an invalid polygon, ...)
      */
     public static BuiltWorld build(Scenario scenario) throws UnsupportedElementException {
-        // Unsupported elements are found before any work, so such scenes cost nothing.
         Map<String, ElementBuilder> builders = ElementBuilders.all();
-        for (Map.Entry<String, Section> e : scenario.elements().entrySet()) {
-            if (builders.get(e.getKey()) instanceof NotYetInEngine) {
-                builders.get(e.getKey()).build(e.getValue(), null);
+        for (String element : scenario.elements().keySet()) {
+            if (!builders.containsKey(element)) {
+                throw new UnsupportedElementException(element, scenario.elements().get(element).path());
             }
         }
         World world = new World();

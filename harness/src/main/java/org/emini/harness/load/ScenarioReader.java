@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -86,7 +87,7 @@ final class ScenarioReader {
                 problem(b.path(), "duplicate body name '" + b.name() + "'");
             }
         }
-        List<ActionSpec> actions = actions(root.get("actions"), r.key("actions"), names);
+
         Map<String, Section> elements = new LinkedHashMap<>();
         for (String section : ELEMENT_SECTIONS) {
             if (root.has(section)) {
@@ -94,7 +95,7 @@ final class ScenarioReader {
                 checkBodyRefs(root.get(section), r.key(section), names);
             }
         }
-        Set<String> emitters = new HashSet<>();
+        Set<String> emitters = new LinkedHashSet<>();
         JsonNode particles = root.get("particles");
         if (particles != null) {
             for (int i = 0; i < particles.size(); i++) {
@@ -104,6 +105,7 @@ final class ScenarioReader {
                 }
             }
         }
+        List<ActionSpec> actions = actions(root.get("actions"), r.key("actions"), names, emitters);
         JsonNode worldNode = root.get("world");
         if (worldNode != null && worldNode.has("simulationArea")) {
             elements.put("world.simulationArea", new Section(worldNode.get("simulationArea"),
@@ -121,7 +123,7 @@ final class ScenarioReader {
                 oracle = new Section(reference.get("oracle"), r.key("reference").key("oracle"));
             }
         }
-        RunSpec run = run(root.get("run"), r.key("run"), names, closedForm != null);
+        RunSpec run = run(root.get("run"), r.key("run"), names, emitters, closedForm != null);
         KnownFailure known = knownFailure(root.get("knownFailure"));
         String description = root.has("description") ? root.get("description").asText() : "";
         String category = root.has("category") ? root.get("category").asText() : null;
@@ -139,6 +141,14 @@ final class ScenarioReader {
         }
         if (w.has("ticksPerSecond") && w.has("timestep")) {
             problem(p.key("timestep"), "give ticksPerSecond or timestep, not both");
+        }
+        JsonNode area = w.get("simulationArea");
+        if (area != null && area.has("end") && area.get("end").asDouble() < area.get("start").asDouble()) {
+            problem(p.key("simulationArea").key("end"), "the simulation area ends before it starts");
+        }
+        if (area != null && area.has("max") && (area.get("max").get(0).asDouble() < area.get("min").get(0).asDouble()
+                || area.get("max").get(1).asDouble() < area.get("min").get(1).asDouble())) {
+            problem(p.key("simulationArea").key("max"), "the simulation area's max is below its min");
         }
         double timestep = w.has("timestep") ? w.get("timestep").asDouble()
                 : w.has("ticksPerSecond") ? 1.0 / w.get("ticksPerSecond").asDouble() : d.timestep();
@@ -249,7 +259,7 @@ final class ScenarioReader {
                 state(g.get("body"), p.key("body")), p);
     }
 
-    private List<ActionSpec> actions(JsonNode list, JsonPath p, Set<String> names) {
+    private List<ActionSpec> actions(JsonNode list, JsonPath p, Set<String> names, Set<String> emitters) {
         List<ActionSpec> out = new ArrayList<>();
         if (list == null) {
             return out;
@@ -284,17 +294,25 @@ final class ScenarioReader {
                 case torque:
                     value = a.get("torque").asDouble();
                     break;
+                case emit:
+                    value = a.get("count").asInt();
+                    if (!emitters.contains(a.get("emitter").asText())) {
+                        problem(ap.key("emitter"), "no emitter named '" + a.get("emitter").asText() + "'"
+                                + known(emitters));
+                    }
+                    break;
                 default:
                     value = a.get("angularImpulse").asDouble();
                     break;
             }
             out.add(new ActionSpec(a.get("at").asDouble(), kind, body, vector,
-                    a.has("point") ? vec(a.get("point"), 0, 0) : null, value, num(a, "duration", Double.NaN), ap));
+                    a.has("point") ? vec(a.get("point"), 0, 0) : null, value, num(a, "duration", Double.NaN),
+                    a.has("emitter") ? a.get("emitter").asText() : null, ap));
         }
         return out;
     }
 
-    private RunSpec run(JsonNode run, JsonPath p, Set<String> names, boolean hasClosedForm) {
+    private RunSpec run(JsonNode run, JsonPath p, Set<String> names, Set<String> emitters, boolean hasClosedForm) {
         JsonNode rec = run.get("record");
         JsonPath rp = p.key("record");
         Map<MetricSpec.Kind, MetricSpec> metrics = new LinkedHashMap<>();
@@ -303,7 +321,7 @@ final class ScenarioReader {
         if (rec != null && rec.has("metrics")) {
             JsonNode list = rec.get("metrics");
             for (int i = 0; i < list.size(); i++) {
-                MetricSpec m = metric(list.get(i), rp.key("metrics").index(i), names);
+                MetricSpec m = metric(list.get(i), rp.key("metrics").index(i), names, emitters);
                 if (metrics.put(m.kind(), m) != null) {
                     problem(m.path(), "metric '" + m.kind() + "' is listed twice");
                 }
@@ -353,13 +371,17 @@ final class ScenarioReader {
                 }
             }
         }
+        if (metrics.containsKey(MetricSpec.Kind.particles) && emitters.isEmpty()) {
+            MetricSpec m = metrics.get(MetricSpec.Kind.particles);
+            problem(m.path() != null ? m.path() : p, "the particles metric needs emitters under particles");
+        }
         double every = rec != null && rec.has("every") ? rec.get("every").asDouble() : Double.NaN;
         boolean trace = rec == null || bool(rec, "trace", true);
         RecordSpec record = new RecordSpec(every, List.copyOf(metrics.values()), bodies, bodyNames, trace);
         return new RunSpec(run.get("duration").asDouble(), record, expect);
     }
 
-    private MetricSpec metric(JsonNode m, JsonPath p, Set<String> names) {
+    private MetricSpec metric(JsonNode m, JsonPath p, Set<String> names, Set<String> emitterNames) {
         if (m.isTextual()) {
             return MetricSpec.plain(MetricSpec.Kind.valueOf(m.asText()), p);
         }
@@ -392,7 +414,23 @@ final class ScenarioReader {
                 bodies.add(n);
             }
         }
-        return new MetricSpec(kind, about[0], about[1], walls, bodies, p);
+        List<String> emitters = new ArrayList<>();
+        if (o.has("emitters")) {
+            for (int i = 0; i < o.get("emitters").size(); i++) {
+                String n = o.get("emitters").get(i).asText();
+                if (!emitterNames.contains(n)) {
+                    problem(op.key("emitters").index(i), "no emitter named '" + n + "'" + known(emitterNames));
+                }
+                emitters.add(n);
+            }
+        }
+        JsonNode region = o.get("region");
+        double[] min = region != null ? vec(region.get("min"), 0, 0) : null;
+        double[] max = region != null ? vec(region.get("max"), 0, 0) : null;
+        if (region != null && (max[0] < min[0] || max[1] < min[1])) {
+            problem(op.key("region"), "region max must not be below min");
+        }
+        return new MetricSpec(kind, about[0], about[1], walls, bodies, emitters, min, max, p);
     }
 
     private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm) {

@@ -31,6 +31,8 @@ public final class Metrics {
                 return new StabilityMetric(world);
             case constraintError:
                 return new ConstraintErrorMetric(world.world());
+            case particles:
+                return new ParticlesMetric(world, spec);
             default:
                 throw new UnsupportedElementException("metric " + spec.kind(),
                         spec.path() != null ? spec.path() : JsonPath.ROOT.key("run"));

@@ -426,7 +426,9 @@ public final class Comparison {
             boolean gravity = s.world().gravityX() != 0 || s.world().gravityY() != 0;
             boolean pushed = false;
             for (ActionSpec a : s.actions()) {
-                if (a.kind() != ActionSpec.Kind.gravity || a.vector()[0] != 0 || a.vector()[1] != 0) {
+                // A particle burst acts on no body.
+                if (a.kind() != ActionSpec.Kind.emit
+                        && (a.kind() != ActionSpec.Kind.gravity || a.vector()[0] != 0 || a.vector()[1] != 0)) {
                     pushed = true;
                 }
             }

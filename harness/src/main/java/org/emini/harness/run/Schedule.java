@@ -9,7 +9,8 @@ import org.emini.harness.scenario.ActionSpec;
 /**
  * Applies the scene's actions before each tick. An action at time t acts before tick k = ⌈t/h⌉ (the
  * first tick that starts at or after t); a force or torque acts before each of the
- * max(1, round(duration/h)) ticks from there (the engine clears forces after every tick).
+ * max(1, round(duration/h)) ticks from there (the engine clears forces after every tick). An emit action
+ * is a burst: the emitter's {@code emit(count)}, on top of its rate.
  */
 final class Schedule {
     private final List<ActionSpec> actions;
@@ -67,6 +68,9 @@ final class Schedule {
                 break;
             case torque:
                 b.applyTorque((float) a.value());
+                break;
+            case emit:
+                built.emitters().get(a.emitter()).emit((int) a.value());
                 break;
             case velocity:
                 if (a.vector() != null) {

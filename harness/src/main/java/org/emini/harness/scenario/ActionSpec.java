@@ -9,16 +9,17 @@ import org.emini.harness.load.JsonPath;
  *
  * @param at seconds from the start
  * @param kind what to do
- * @param body the body acted on (null for gravity)
+ * @param body the body acted on (null for gravity and emit)
  * @param vector impulse, force, velocity or gravity, by kind (null if not given)
  * @param point world point of application, or null for the body's centre
- * @param value angular impulse, torque or angular velocity, by kind (NaN if not given)
+ * @param value angular impulse, torque, angular velocity or particle count (emit), by kind (NaN if not given)
  * @param duration seconds, or NaN for one tick
+ * @param emitter the emitter of an emit action (its scene name), else null
  * @param path where the action is written
  */
 public record ActionSpec(double at, Kind kind, String body, double[] vector, double[] point, double value,
-                         double duration, JsonPath path) {
+                         double duration, String emitter, JsonPath path) {
 
     /** Action kinds, named as in the scene files. */
-    public enum Kind { impulse, angularImpulse, force, torque, velocity, gravity }
+    public enum Kind { impulse, angularImpulse, force, torque, velocity, gravity, emit }
 }

@@ -11,17 +11,21 @@ import org.emini.harness.load.JsonPath;
  * @param aboutY angular momentum reference point (px)
  * @param walls tunnelling walls
  * @param bodies tunnelling bodies (empty: every dynamic body)
+ * @param emitters particles: the emitters counted (empty: all)
+ * @param regionMin particles: the region's least corner (px), or null without a region
+ * @param regionMax particles: the region's greatest corner (px), or null without a region
  * @param path where it is requested (null when an expectation asked for it implicitly)
  */
 public record MetricSpec(Kind kind, double aboutX, double aboutY, List<WallSpec> walls, List<String> bodies,
-                         JsonPath path) {
+                         List<String> emitters, double[] regionMin, double[] regionMax, JsonPath path) {
 
     /** Metric kinds, named as in the scene files; each documented in scenarios/README.md. */
-    public enum Kind { energy, linearMomentum, angularMomentum, penetration, constraintError, tunnelling, stability }
+    public enum Kind { energy, linearMomentum, angularMomentum, penetration, constraintError, tunnelling, stability,
+        particles }
 
     /** A metric with no options. */
     public static MetricSpec plain(Kind kind, JsonPath path) {
-        return new MetricSpec(kind, 0, 0, List.of(), List.of(), path);
+        return new MetricSpec(kind, 0, 0, List.of(), List.of(), List.of(), null, null, path);
     }
 
     /**

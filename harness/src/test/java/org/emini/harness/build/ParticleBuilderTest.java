@@ -9,6 +9,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.emini.harness.Scenes;
+import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.load.JsonPath;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.Section;
@@ -95,5 +97,20 @@ class ParticleBuilderTest {
         UnsupportedElementException x = assertThrows(UnsupportedElementException.class,
                 () -> new ParticleBuilder().build(new Section(list, JsonPath.ROOT.key("particles")), w));
         assertEquals("$.particles[0].burst", x.getMessage().replaceAll(".*\\(at (.*)\\).*", "$1"));
+    }
+
+    @Test
+    void anEmitActionIsABurstOnTopOfTheRate() {
+        SceneResult r = ScenarioRunner.run(Scenes.valid("burst.yaml",
+                "particles: [{name: jet, from: [0, 0], rate: 0, maxCount: 50}]",
+                "actions: [{at: 0.1, type: emit, emitter: jet, count: 30}, {at: 0.2, type: emit, emitter: jet, count: 30}]",
+                "run: {duration: 0.5, record: {metrics: [particles]}}"), n -> { });
+        double[] count = r.trace().column("particles.count");
+        assertEquals(0, count[2], "before tick 2 (t = 0.1 s) nothing");
+        assertEquals(30, count[3]);
+        assertEquals(50, count[5], "the second burst stops when the pool of 50 is full");
+        assertTrue(Scenes.load("e.yaml", "particles: [{from: [0, 0]}]",
+                "actions: [{at: 0, type: emit, emitter: jet, count: 1}]", "run: {duration: 1}").problems().toString()
+                .contains("no emitter named 'jet'"));
     }
 }

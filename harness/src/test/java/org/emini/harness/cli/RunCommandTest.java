@@ -3,6 +3,8 @@ package org.emini.harness.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import java.nio.file.Files;
@@ -22,8 +24,22 @@ class RunCommandTest {
             "");
 
     private static int run(Path scenes, Path reports) {
-        return Main.execute("run", "--schema", Repo.schema().toString(), "--reports", reports.toString(),
+        return run(scenes, reports, Repo.schema());
+    }
+
+    private static int run(Path scenes, Path reports, Path schema) {
+        return Main.execute("run", "--schema", schema.toString(), "--reports", reports.toString(),
                 "--no-progress", scenes.toString());
+    }
+
+    /** The library's schema with an emitter key no builder reads. */
+    private static Path aheadSchema(Path dir) throws Exception {
+        ObjectMapper json = new ObjectMapper();
+        ObjectNode schema = (ObjectNode) json.readTree(Repo.schema().toFile());
+        ((ObjectNode) schema.path("$defs").path("emitter").path("properties")).putObject("burst").put("type", "integer");
+        Path file = Files.createDirectories(dir.resolve("schema")).resolve("scenario.schema.json");
+        json.writeValue(file.toFile(), schema);
+        return file;
     }
 
     private static JsonObject results(Path reports) throws Exception {
@@ -37,15 +53,17 @@ class RunCommandTest {
         Files.writeString(scenes.resolve("a-pass.yaml"), String.format(FALLING, "name: falls"));
         Files.writeString(scenes.resolve("b-known.yaml"), String.format(FALLING.replace("atLeast: 40", "atLeast: 60"),
                 "knownFailure: {reason: test, measured: 50}"));
+        // A key the schema has and the builder does not read (a schema ahead of the harness): unsupported.
         Files.writeString(scenes.resolve("c-unsupported.yaml"), String.join("\n",
-                "bodies: [{name: a, shape: {type: circle, radius: 5}}, {name: b, shape: {type: circle, radius: 5}}]",
-                "landscape: {segments: [{from: [-100, 50], to: [100, 50]}]}", "run: {duration: 1}", ""));
+                "bodies: [{name: a, shape: {type: circle, radius: 5}}]",
+                "particles: [{from: [0, 0], burst: 5}]", "run: {duration: 1}", ""));
         Path reports = dir.resolve("reports");
-        assertEquals(0, run(scenes, reports));
+        assertEquals(0, run(scenes, reports, aheadSchema(dir)));
         JsonObject summary = results(reports).getAsJsonObject("summary");
         assertEquals(1, summary.get("pass").getAsInt());
         assertEquals(1, summary.get("knownFailure").getAsInt());
         assertEquals(1, summary.get("unsupported").getAsInt());
+        assertTrue(Files.readString(reports.resolve("results.json")).contains("$.particles[0].burst"));
         assertTrue(Files.readString(reports.resolve("junit/TEST-scenarios.xml")).contains("tests=\"3\""));
         JsonObject trace = JsonParser.parseString(Files.readString(reports.resolve("traces/a-pass.trace.json")))
                 .getAsJsonObject();

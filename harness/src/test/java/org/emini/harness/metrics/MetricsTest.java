@@ -97,4 +97,78 @@ class MetricsTest {
         assertEquals(2, t.column("penetration.points")[1]);
         assertTrue(t.column("penetration.mean")[1] <= max);
     }
+
+    @Test
+    void penetrationMeasuresLandscapeContactsAndMultiShapeParts() {
+        // The same 2 px deep box, on a landscape floor: a landscape contact has no body B.
+        SceneResult land = ScenarioRunner.run(Scenes.valid("sunk-land.yaml",
+                "world: {gravity: [0, 0]}",
+                "bodies: [{name: box, shape: {type: rectangle, width: 20, height: 20}, position: [0, -8]}]",
+                "landscape: {segments: [{from: [-100, 0], to: [100, 0]}]}",
+                "run: {duration: 0.05, record: {metrics: [penetration]}}"), n -> { });
+        double max = land.trace().column("penetration.max")[1];
+        assertTrue(max > 0 && max <= 2.0001, "max " + max);
+        assertEquals(2, land.trace().column("penetration.points")[1]);
+        // A multi-shape (two boxes side by side) 2 px deep in a static ground: measured part by part.
+        SceneResult multi = ScenarioRunner.run(Scenes.valid("sunk-multi.yaml",
+                "world: {gravity: [0, 0]}",
+                "shapes:",
+                "  sq: {type: rectangle, width: 20, height: 20}",
+                "  pair: {type: multiShape, parts: [{shape: sq, offset: [-10, 0]}, {shape: sq, offset: [10, 0]}]}",
+                "bodies:",
+                "  - {name: ground, shape: {type: rectangle, width: 200, height: 20}, position: [0, 10], static: true}",
+                "  - {name: pair, shape: pair, position: [0, -8]}",
+                "run: {duration: 0.05, record: {metrics: [penetration]}}"), n -> { });
+        max = multi.trace().column("penetration.max")[1];
+        assertTrue(max > 0 && max <= 2.0001, "max " + max);
+        assertEquals(4, multi.trace().column("penetration.points")[1]);
+    }
+
+    @Test
+    void penetrationOfABodyPushedPastAThinSegmentIsItsDepthFromTheSideItCameFrom() {
+        // A ball that has sunk 15 px into a floor of no thickness (its centre 5 px past the line): the
+        // contact keeps the side it touched from, so the depth reads 15 px, not 5 px from below.
+        SceneResult r = ScenarioRunner.run(Scenes.valid("deep.yaml",
+                "world: {gravity: [0, 0]}",
+                "bodies: [{name: ball, shape: {type: circle, radius: 10}, position: [0, -10.5], velocity: [0, 60]}]",
+                "landscape: {segments: [{from: [-100, 0], to: [100, 0]}]}",
+                "run: {duration: 1, record: {metrics: [penetration, {tunnelling: {walls: [{from: [-100, 0], to: [100, 0]}]}}]}}"),
+                n -> { });
+        double[] max = r.trace().column("penetration.max");
+        for (double m : max) {
+            assertTrue(m < 1, "a ball stopped by the floor is never deep: " + m);
+        }
+        assertEquals(0, r.trace().column("tunnelling.count")[max.length - 1]);
+    }
+
+    @Test
+    void particlesCountsLiveParticlesAndThoseOutsideTheRegion() {
+        // 20 particles a tick straight up at 100 px/s without gravity: after 3 ticks 60 exist, those born
+        // in the first tick are 10 to 15 px up; a region ending 12 px above the emitter leaves some out.
+        SceneResult r = ScenarioRunner.run(Scenes.valid("jet.yaml",
+                "world: {gravity: [0, 0]}",
+                "particles:",
+                "  - {name: jet, from: [0, 0], rate: 400, lifetime: 10, speed: 100, angleDeg: -90}",
+                "  - {name: other, from: [500, 0], rate: 400, lifetime: 10}",
+                "run:",
+                "  duration: 0.15",
+                "  record: {metrics: [{particles: {emitters: [jet], region: {min: [-1, -12], max: [1, 0]}}}]}"),
+                n -> { });
+        double[] count = r.trace().column("particles.count");
+        double[] outside = r.trace().column("particles.outside");
+        assertEquals(0, count[0]);
+        assertEquals(20, count[1]);
+        assertEquals(60, count[3]);
+        assertEquals(0, outside[1]);
+        assertTrue(outside[3] > 0 && outside[3] <= 20, "outside " + outside[3]);
+    }
+
+    @Test
+    void theParticlesMetricNeedsEmittersWithKnownNames() {
+        assertTrue(Scenes.load("none.yaml", "run: {duration: 1, record: {metrics: [particles]}}").problems().toString()
+                .contains("the particles metric needs emitters"));
+        assertTrue(Scenes.load("wrong.yaml", "particles: [{from: [0, 0]}]",
+                "run: {duration: 1, record: {metrics: [{particles: {emitters: [jet]}}]}}").problems().toString()
+                .contains("no emitter named 'jet'"));
+    }
 }
