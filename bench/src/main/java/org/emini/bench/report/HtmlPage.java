@@ -204,7 +204,7 @@ public final class HtmlPage {
         }
         Object me = c.get("motorSpeedError");
         if (me instanceof Number && ((Number) me).doubleValue() != 0) {
-            s.append(", container ω off by ").append(num(((Number) me).doubleValue() * 100, "%.1f")).append("%");
+            s.append(", container ω off by ").append(num(((Number) me).doubleValue() * 100, "%.2g")).append("%");
         }
         s.append(", max speed ").append(num(c.get("maxSpeed"), "%.0f")).append(" px/s</span>");
         return s.toString();

@@ -132,7 +132,7 @@ public final class MarkdownTables {
             s.append(String.format(Locale.ROOT, ", %.0f particles", num(c.get("particles"))));
         }
         if (c.get("motorSpeedError") instanceof Number && num(c.get("motorSpeedError")) != 0) {
-            s.append(String.format(Locale.ROOT, ", container ω off by %.1f%%", num(c.get("motorSpeedError")) * 100));
+            s.append(String.format(Locale.ROOT, ", container ω off by %.2g%%", num(c.get("motorSpeedError")) * 100));
         }
         return s.append(')').toString();
     }
