@@ -34,6 +34,24 @@ public interface BenchEngine extends AutoCloseable {
     /** Writes the speed (px/s) of every body, in scene order, to {@code out[i]}. */
     void speeds(double[] out);
 
+    /**
+     * Writes the angular velocity (rad/s, in the scene's sense: positive grows the angle, clockwise
+     * on the screen) of every body, in scene order, to {@code out[i]}.
+     */
+    void angularVelocities(double[] out);
+
+    /**
+     * Live particles: Emini's particles, or the circle bodies the peers make for them (not counted
+     * in {@link #bodyCount()}).
+     */
+    default int particleCount() {
+        return 0;
+    }
+
+    /** Writes x, y (px) of every live particle to {@code out[2 i]}, {@code out[2 i + 1]}. */
+    default void particlePositions(double[] out) {
+    }
+
     /** The engine's settings as used, for the report (timestep, iterations, unit scale, ...). */
     String settings();
 

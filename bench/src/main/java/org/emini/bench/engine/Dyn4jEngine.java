@@ -18,6 +18,7 @@ final class Dyn4jEngine implements BenchEngine {
     private World<Body> world;
     private Body[] bodies;
     private PeerScene scene;
+    private PeerParticles<Body> particles;
 
     @Override
     public String id() {
@@ -36,18 +37,20 @@ final class Dyn4jEngine implements BenchEngine {
         int i = 0;
         for (PeerScene.PeerBody pb : scene.bodies) {
             Body b = new Body();
-            PeerScene.PeerShape sh = pb.shape;
-            Convex c;
-            if (sh.circle) {
-                c = Geometry.createCircle(sh.radius);
-            } else {
-                Vector2[] v = new Vector2[sh.vertexCount()];
-                for (int k = 0; k < v.length; k++) {
-                    v[k] = new Vector2(sh.xy[2 * k], sh.xy[2 * k + 1]);
+            for (PeerScene.PeerShape sh : pb.parts) {
+                Convex c;
+                if (sh.circle) {
+                    c = Geometry.createCircle(sh.radius);
+                    c.translate(sh.cx, sh.cy);
+                } else {
+                    Vector2[] v = new Vector2[sh.vertexCount()];
+                    for (int k = 0; k < v.length; k++) {
+                        v[k] = new Vector2(sh.xy[2 * k], sh.xy[2 * k + 1]);
+                    }
+                    c = Geometry.createPolygon(v);
                 }
-                c = Geometry.createPolygon(v);
+                b.addFixture(c, sh.density, sh.friction, sh.restitution);
             }
-            b.addFixture(c, sh.density, sh.friction, sh.restitution);
             if (!pb.dynamic) {
                 b.setMass(MassType.INFINITE);
             } else {
@@ -64,19 +67,87 @@ final class Dyn4jEngine implements BenchEngine {
             world.addBody(b);
             bodies[i++] = b;
         }
-        for (PeerScene.PeerJoint pj : scene.joints) {
+        particles = new PeerParticles<>(scene.emitters, new Particles());
+        for (int k = 0; k < scene.joints.size(); k++) {
+            PeerScene.PeerJoint pj = scene.joints.get(k);
             Vector2 at = new Vector2(pj.x, pj.y);
-            org.dyn4j.dynamics.joint.Joint<Body> j = pj.fixed
-                ? new org.dyn4j.dynamics.joint.WeldJoint<>(bodies[pj.a], bodies[pj.b], at)
-                : new org.dyn4j.dynamics.joint.RevoluteJoint<>(bodies[pj.a], bodies[pj.b], at);
+            org.dyn4j.dynamics.joint.Joint<Body> j;
+            if (pj.fixed) {
+                j = new org.dyn4j.dynamics.joint.WeldJoint<>(bodies[pj.a], bodies[pj.b], at);
+            } else {
+                org.dyn4j.dynamics.joint.RevoluteJoint<Body> r = new org.dyn4j.dynamics.joint.RevoluteJoint<>(bodies[pj.a], bodies[pj.b], at);
+                for (PeerScene.PeerMotor pm : scene.motors) {
+                    if (pm.joint == k) {
+                        motor(r, pm);
+                    }
+                }
+                j = r;
+            }
             j.setCollisionAllowed(pj.collide);
             world.addJoint(j);
         }
     }
 
+    /**
+     * The joint's motor. {@link PeerScene.PeerMotor#speed} is ω_b − ω_a (Box2D's sense); dyn4j's
+     * revolute motor speed is ω_a − ω_b (body 1 minus body 2), so it is negated (AdaptersTest reads
+     * the driven body's ω back in every engine).
+     */
+    private static void motor(org.dyn4j.dynamics.joint.RevoluteJoint<Body> r, PeerScene.PeerMotor pm) {
+        r.setMotorEnabled(true);
+        r.setMotorSpeed(-pm.speed);
+        r.setMaximumMotorTorqueEnabled(true);
+        r.setMaximumMotorTorque(pm.maxTorque);
+    }
+
+    /** Particles as small circle bodies meeting the scene's bodies only (a category filter). */
+    private final class Particles implements PeerParticles.Physics<Body> {
+        @Override
+        public Body create(PeerScene.PeerEmitter e, double x, double y, double vx, double vy) {
+            Body b = new Body();
+            org.dyn4j.dynamics.BodyFixture f = b.addFixture(Geometry.createCircle(PeerScene.PARTICLE_RADIUS), 1.0, 0.0, e.restitution);
+            f.setFilter(new org.dyn4j.collision.CategoryFilter(PeerScene.PARTICLE_CATEGORY, e.collide ? PeerScene.PARTICLE_MASK : 0));
+            b.setMass(MassType.FIXED_ANGULAR_VELOCITY);
+            b.translate(x, y);
+            b.setLinearVelocity(vx, vy);
+            b.setGravityScale(e.gravityScale);
+            b.setAtRestDetectionEnabled(false);
+            world.addBody(b);
+            return b;
+        }
+
+        @Override
+        public void destroy(Body b) {
+            world.removeBody(b);
+        }
+
+        @Override
+        public double x(Body b) {
+            return b.getTransform().getTranslationX();
+        }
+
+        @Override
+        public double y(Body b) {
+            return b.getTransform().getTranslationY();
+        }
+    }
+
     @Override
     public void tick() {
+        if (particles.any()) {
+            particles.beforeStep(scene.timestep);
+        }
         world.step(1);
+    }
+
+    @Override
+    public int particleCount() {
+        return particles.count();
+    }
+
+    @Override
+    public void particlePositions(double[] out) {
+        particles.positions(out);
     }
 
     @Override
@@ -103,12 +174,19 @@ final class Dyn4jEngine implements BenchEngine {
     }
 
     @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = -bodies[i].getAngularVelocity();
+        }
+    }
+
+    @Override
     public String settings() {
         Settings s = world.getSettings();
         return "metres (20 px = 1 m); timestep " + s.getStepFrequency() + " s; "
             + s.getVelocityConstraintSolverIterations() + " velocity + " + s.getPositionConstraintSolverIterations()
             + " position iterations (defaults); continuous detection " + s.getContinuousDetectionMode()
-            + "; at-rest detection off";
+            + "; at-rest detection off" + (particles.any() ? "; " + JBox2dEngine.PARTICLES : "");
     }
 
     @Override

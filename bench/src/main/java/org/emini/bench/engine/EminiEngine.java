@@ -6,6 +6,7 @@ import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.build.WorldBuilder;
 import org.emini.harness.scenario.Scenario;
+import org.emini.particle.ParticleEmitter;
 
 /**
  * Emini, built by the harness's own {@link WorldBuilder}: the very world {@code ./emini run} judges.
@@ -59,9 +60,39 @@ final class EminiEngine implements BenchEngine {
     }
 
     @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = bodies[i].getAngularVelocity();
+        }
+    }
+
+    @Override
+    public int particleCount() {
+        int n = 0;
+        for (int k = 0; k < world.getParticleEmitterCount(); k++) {
+            n += world.getParticleEmitter(k).getParticleCount();
+        }
+        return n;
+    }
+
+    @Override
+    public void particlePositions(double[] out) {
+        int i = 0;
+        for (int k = 0; k < world.getParticleEmitterCount(); k++) {
+            ParticleEmitter e = world.getParticleEmitter(k);
+            for (int j = 0; j < e.getParticleCount(); j++, i++) {
+                out[2 * i] = e.getX(j);
+                out[2 * i + 1] = e.getY(j);
+            }
+        }
+    }
+
+    @Override
     public String settings() {
         return "px units; timestep " + world.getTimestep() + " s; " + world.getConstraintIterations()
-            + " substeps (each one soft solve + one relax pass); default SolverSettings; no sleeping (Emini has none)";
+            + " substeps (each one soft solve + one relax pass); default SolverSettings; no sleeping (Emini has none)"
+            + (world.getParticleEmitterCount() > 0 ? "; particles: Emini's particle system (points, exact parabolas, "
+                + "swept against the bodies; never touch each other)" : "");
     }
 
     @Override

@@ -22,6 +22,7 @@ final class GdxBox2dEngine implements BenchEngine {
     private World world;
     private Body[] bodies;
     private float dt;
+    private PeerParticles<Body> particles;
 
     @Override
     public String id() {
@@ -47,17 +48,21 @@ final class GdxBox2dEngine implements BenchEngine {
             def.gravityScale = pb.gravity ? 1f : 0f;
             def.allowSleep = false;
             Body b = world.createBody(def);
-            Shape shape = shape(pb.shape);
-            FixtureDef fd = new FixtureDef();
-            fd.shape = shape;
-            fd.density = (float) pb.shape.density;
-            fd.friction = (float) pb.shape.friction;
-            fd.restitution = (float) pb.shape.restitution;
-            b.createFixture(fd);
-            shape.dispose();
+            for (PeerScene.PeerShape part : pb.parts) {
+                Shape shape = shape(part);
+                FixtureDef fd = new FixtureDef();
+                fd.shape = shape;
+                fd.density = (float) part.density;
+                fd.friction = (float) part.friction;
+                fd.restitution = (float) part.restitution;
+                b.createFixture(fd);
+                shape.dispose();
+            }
             bodies[i++] = b;
         }
-        for (PeerScene.PeerJoint pj : scene.joints) {
+        particles = new PeerParticles<>(scene.emitters, new Particles());
+        for (int k = 0; k < scene.joints.size(); k++) {
+            PeerScene.PeerJoint pj = scene.joints.get(k);
             if (pj.fixed) {
                 com.badlogic.gdx.physics.box2d.joints.WeldJointDef d = new com.badlogic.gdx.physics.box2d.joints.WeldJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vector2((float) pj.x, (float) pj.y));
@@ -67,8 +72,60 @@ final class GdxBox2dEngine implements BenchEngine {
                 com.badlogic.gdx.physics.box2d.joints.RevoluteJointDef d = new com.badlogic.gdx.physics.box2d.joints.RevoluteJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vector2((float) pj.x, (float) pj.y));
                 d.collideConnected = pj.collide;
+                for (PeerScene.PeerMotor pm : scene.motors) {
+                    if (pm.joint == k) {
+                        d.enableMotor = true;
+                        d.motorSpeed = (float) pm.speed;
+                        d.maxMotorTorque = (float) pm.maxTorque;
+                    }
+                }
                 world.createJoint(d);
             }
+        }
+    }
+
+    /** Particles as small circle bodies meeting the scene's bodies only (categories and masks). */
+    private final class Particles implements PeerParticles.Physics<Body> {
+        private final CircleShape circle = new CircleShape();
+        private final BodyDef def = new BodyDef();
+        private final FixtureDef fd = new FixtureDef();
+
+        Particles() {
+            circle.setRadius((float) PeerScene.PARTICLE_RADIUS);
+            def.type = BodyDef.BodyType.DynamicBody;
+            def.fixedRotation = true;
+            def.allowSleep = false;
+            fd.shape = circle;
+            fd.density = 1f;
+            fd.friction = 0f;
+            fd.filter.categoryBits = (short) PeerScene.PARTICLE_CATEGORY;
+        }
+
+        @Override
+        public Body create(PeerScene.PeerEmitter e, double x, double y, double vx, double vy) {
+            def.position.set((float) x, (float) y);
+            def.linearVelocity.set((float) vx, (float) vy);
+            def.gravityScale = (float) e.gravityScale;
+            Body b = world.createBody(def);
+            fd.restitution = (float) e.restitution;
+            fd.filter.maskBits = (short) (e.collide ? PeerScene.PARTICLE_MASK : 0);
+            b.createFixture(fd);
+            return b;
+        }
+
+        @Override
+        public void destroy(Body b) {
+            world.destroyBody(b);
+        }
+
+        @Override
+        public double x(Body b) {
+            return b.getPosition().x;
+        }
+
+        @Override
+        public double y(Body b) {
+            return b.getPosition().y;
         }
     }
 
@@ -76,6 +133,7 @@ final class GdxBox2dEngine implements BenchEngine {
         if (sh.circle) {
             CircleShape c = new CircleShape();
             c.setRadius((float) sh.radius);
+            c.setPosition(new Vector2((float) sh.cx, (float) sh.cy));
             return c;
         }
         float[] v = new float[sh.xy.length];
@@ -89,7 +147,20 @@ final class GdxBox2dEngine implements BenchEngine {
 
     @Override
     public void tick() {
+        if (particles.any()) {
+            particles.beforeStep(dt);
+        }
         world.step(dt, JBox2dEngine.VELOCITY_ITERATIONS, JBox2dEngine.POSITION_ITERATIONS);
+    }
+
+    @Override
+    public int particleCount() {
+        return particles.count();
+    }
+
+    @Override
+    public void particlePositions(double[] out) {
+        particles.positions(out);
     }
 
     @Override
@@ -116,9 +187,17 @@ final class GdxBox2dEngine implements BenchEngine {
     }
 
     @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = -bodies[i].getAngularVelocity();
+        }
+    }
+
+    @Override
     public String settings() {
         return "metres (20 px = 1 m); timestep " + dt + " s; " + JBox2dEngine.VELOCITY_ITERATIONS + " velocity + "
-            + JBox2dEngine.POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off; native Box2D 2.3.1 via JNI";
+            + JBox2dEngine.POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off; native Box2D 2.3.1 via JNI"
+            + (particles.any() ? "; " + JBox2dEngine.PARTICLES : "");
     }
 
     @Override

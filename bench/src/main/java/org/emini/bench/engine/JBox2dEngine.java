@@ -23,9 +23,14 @@ final class JBox2dEngine implements BenchEngine {
     /** Box2D's recommended position iterations. */
     static final int POSITION_ITERATIONS = 3;
 
+    /** How the peers make particles, for the settings line. */
+    static final String PARTICLES = "particles as circle bodies of 0.1 m, fixed rotation, no friction, meeting the scene's "
+        + "bodies but not each other (collision filter), created as emitted and destroyed when their lifetime ends";
+
     private World world;
     private Body[] bodies;
     private float dt;
+    private PeerParticles<Body> particles;
 
     @Override
     public String id() {
@@ -51,15 +56,19 @@ final class JBox2dEngine implements BenchEngine {
             def.gravityScale = pb.gravity ? 1f : 0f;
             def.allowSleep = false;
             Body b = world.createBody(def);
-            FixtureDef fd = new FixtureDef();
-            fd.shape = shape(pb.shape);
-            fd.density = (float) pb.shape.density;
-            fd.friction = (float) pb.shape.friction;
-            fd.restitution = (float) pb.shape.restitution;
-            b.createFixture(fd);
+            for (PeerScene.PeerShape part : pb.parts) {
+                FixtureDef fd = new FixtureDef();
+                fd.shape = shape(part);
+                fd.density = (float) part.density;
+                fd.friction = (float) part.friction;
+                fd.restitution = (float) part.restitution;
+                b.createFixture(fd);
+            }
             bodies[i++] = b;
         }
-        for (PeerScene.PeerJoint pj : scene.joints) {
+        particles = new PeerParticles<>(scene.emitters, new Particles());
+        for (int k = 0; k < scene.joints.size(); k++) {
+            PeerScene.PeerJoint pj = scene.joints.get(k);
             if (pj.fixed) {
                 org.jbox2d.dynamics.joints.WeldJointDef d = new org.jbox2d.dynamics.joints.WeldJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vec2((float) pj.x, (float) pj.y));
@@ -69,8 +78,60 @@ final class JBox2dEngine implements BenchEngine {
                 org.jbox2d.dynamics.joints.RevoluteJointDef d = new org.jbox2d.dynamics.joints.RevoluteJointDef();
                 d.initialize(bodies[pj.a], bodies[pj.b], new Vec2((float) pj.x, (float) pj.y));
                 d.collideConnected = pj.collide;
+                for (PeerScene.PeerMotor pm : scene.motors) {
+                    if (pm.joint == k) {
+                        d.enableMotor = true;
+                        d.motorSpeed = (float) pm.speed;
+                        d.maxMotorTorque = (float) pm.maxTorque;
+                    }
+                }
                 world.createJoint(d);
             }
+        }
+    }
+
+    /** Particles as small circle bodies meeting the scene's bodies only (categories and masks). */
+    private final class Particles implements PeerParticles.Physics<Body> {
+        private final CircleShape circle = new CircleShape();
+        private final BodyDef def = new BodyDef();
+        private final FixtureDef fd = new FixtureDef();
+
+        Particles() {
+            circle.m_radius = (float) PeerScene.PARTICLE_RADIUS;
+            def.type = BodyType.DYNAMIC;
+            def.fixedRotation = true;
+            def.allowSleep = false;
+            fd.shape = circle;
+            fd.density = 1f;
+            fd.friction = 0f;
+            fd.filter.categoryBits = PeerScene.PARTICLE_CATEGORY;
+        }
+
+        @Override
+        public Body create(PeerScene.PeerEmitter e, double x, double y, double vx, double vy) {
+            def.position.set((float) x, (float) y);
+            def.linearVelocity.set((float) vx, (float) vy);
+            def.gravityScale = (float) e.gravityScale;
+            Body b = world.createBody(def);
+            fd.restitution = (float) e.restitution;
+            fd.filter.maskBits = e.collide ? PeerScene.PARTICLE_MASK : 0;
+            b.createFixture(fd);
+            return b;
+        }
+
+        @Override
+        public void destroy(Body b) {
+            world.destroyBody(b);
+        }
+
+        @Override
+        public double x(Body b) {
+            return b.getPosition().x;
+        }
+
+        @Override
+        public double y(Body b) {
+            return b.getPosition().y;
         }
     }
 
@@ -78,6 +139,7 @@ final class JBox2dEngine implements BenchEngine {
         if (sh.circle) {
             CircleShape c = new CircleShape();
             c.m_radius = (float) sh.radius;
+            c.m_p.set((float) sh.cx, (float) sh.cy);
             return c;
         }
         Vec2[] v = new Vec2[sh.vertexCount()];
@@ -91,7 +153,20 @@ final class JBox2dEngine implements BenchEngine {
 
     @Override
     public void tick() {
+        if (particles.any()) {
+            particles.beforeStep(dt);
+        }
         world.step(dt, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    }
+
+    @Override
+    public int particleCount() {
+        return particles.count();
+    }
+
+    @Override
+    public void particlePositions(double[] out) {
+        particles.positions(out);
     }
 
     @Override
@@ -118,9 +193,17 @@ final class JBox2dEngine implements BenchEngine {
     }
 
     @Override
+    public void angularVelocities(double[] out) {
+        for (int i = 0; i < bodies.length; i++) {
+            out[i] = -bodies[i].getAngularVelocity();
+        }
+    }
+
+    @Override
     public String settings() {
         return "metres (20 px = 1 m); timestep " + dt + " s; " + VELOCITY_ITERATIONS + " velocity + "
-            + POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off";
+            + POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off"
+            + (particles.any() ? "; " + PARTICLES : "");
     }
 
     @Override

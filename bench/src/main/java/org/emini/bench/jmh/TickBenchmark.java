@@ -88,7 +88,7 @@ public class TickBenchmark {
         record.put("scene", scene);
         record.put("engine", engine);
         record.put("bodies", n);
-        record.put("dynamicBodies", scenario.bodies().stream().filter(b -> !b.state().isStatic()).count());
+        record.put("dynamicBodies", Stability.moving(scenario));
         record.put("settings", e.settings());
         record.put("buildMillis", (t1 - t0) / 1e6);
         record.put("prerollTicks", p);
@@ -142,9 +142,14 @@ public class TickBenchmark {
         int n = e.bodyCount();
         double[] now = new double[3 * n];
         double[] speeds = new double[n];
+        double[] omegas = new double[n];
         e.poses(now);
         e.speeds(speeds);
-        return Stability.judge(scenario, ticks, initial, now, speeds);
+        e.angularVelocities(omegas);
+        int np = e.particleCount();
+        double[] particles = new double[2 * np];
+        e.particlePositions(particles);
+        return Stability.judge(scenario, ticks, initial, now, speeds, omegas, particles, np);
     }
 
     private void write() {

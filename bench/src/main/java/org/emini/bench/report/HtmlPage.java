@@ -19,7 +19,7 @@ public final class HtmlPage {
             .append("body{font-family:system-ui,sans-serif;margin:2em;max-width:1200px;color:#222}")
             .append("table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}")
             .append("th{background:#f3f3f3}td.l,th.l{text-align:left}tr.emini td{background:#fff6f0}")
-            .append(".stable{color:#1a7f37}.drifted{color:#b35900}.collapsed,.escaped,.stretched,.non-finite,.error{color:#c00;font-weight:bold}")
+            .append(".stable{color:#1a7f37}.drifted{color:#b35900}.collapsed,.escaped,.stretched,.slowed,.non-finite,.error{color:#c00;font-weight:bold}")
             .append(".muted{color:#777}code{background:#f3f3f3;padding:0 3px}</style></head><body>\n");
         h.append("<h1>Emini benchmarks</h1>\n<p>").append(esc(r.generated())).append(" · mode <b>").append(r.mode())
             .append("</b> · ").append(String.format(Locale.ROOT, "%.0f s", r.seconds())).append("</p>\n");
@@ -191,13 +191,20 @@ public final class HtmlPage {
             .append(num(c.get("ticks"), "%.0f")).append(" ticks: dx ").append(num(c.get("maxDxPx"), "%.1f")).append(" px, dy ")
             .append(num(c.get("maxDyPx"), "%.1f")).append(" px, angle ").append(num(c.get("maxAngle"), "%.3f")).append(" rad");
         Object esc = c.get("escaped");
-        if (esc instanceof Number && ((Number) esc).intValue() > 0 && !(c.get("maxJointErrorPx") instanceof Number
-                && ((Number) c.get("maxJointErrorPx")).doubleValue() > 0)) {
+        if (esc instanceof Number && ((Number) esc).intValue() > 0) {
             s.append(", escaped ").append(num(esc, "%.0f"));
         }
         Object je = c.get("maxJointErrorPx");
         if (je instanceof Number && ((Number) je).doubleValue() > 0) {
             s.append(", joint error ").append(num(je, "%.2f")).append(" px");
+        }
+        Object np = c.get("particles");
+        if (np instanceof Number && ((Number) np).intValue() > 0) {
+            s.append(", ").append(num(np, "%.0f")).append(" particles");
+        }
+        Object me = c.get("motorSpeedError");
+        if (me instanceof Number && ((Number) me).doubleValue() != 0) {
+            s.append(", container ω off by ").append(num(((Number) me).doubleValue() * 100, "%.2g")).append("%");
         }
         s.append(", max speed ").append(num(c.get("maxSpeed"), "%.0f")).append(" px/s</span>");
         return s.toString();

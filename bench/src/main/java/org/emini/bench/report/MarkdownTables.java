@@ -125,8 +125,14 @@ public final class MarkdownTables {
         if (num(c.get("maxJointErrorPx")) > 0) {
             s.append(String.format(Locale.ROOT, ", joint error %.1f px", num(c.get("maxJointErrorPx"))));
         }
-        if (num(c.get("escaped")) > 0 && !(num(c.get("maxJointErrorPx")) > 0)) {
+        if (num(c.get("escaped")) > 0) {
             s.append(String.format(Locale.ROOT, ", %.0f escaped", num(c.get("escaped"))));
+        }
+        if (num(c.get("particles")) > 0) {
+            s.append(String.format(Locale.ROOT, ", %.0f particles", num(c.get("particles"))));
+        }
+        if (c.get("motorSpeedError") instanceof Number && num(c.get("motorSpeedError")) != 0) {
+            s.append(String.format(Locale.ROOT, ", container ω off by %.2g%%", num(c.get("motorSpeedError")) * 100));
         }
         return s.append(')').toString();
     }

@@ -99,7 +99,7 @@ public final class BenchRunner {
         }
         iterations.sort(null);
         Scenario scenario = scenes.load(sceneId);
-        long dynamic = scenario.bodies().stream().filter(b -> !b.state().isStatic()).count();
+        long dynamic = org.emini.bench.check.Stability.moving(scenario);
         return result(sceneId, engineId, scenario, dynamic, score / 1000.0, error == null ? null : error / 1000.0,
             iterations.get(iterations.size() / 2) / 1000.0, alloc, rec);
     }
@@ -168,7 +168,7 @@ public final class BenchRunner {
         double median = primary.getStatistics().getPercentile(50) / 1000.0;
         Result<?> alloc = r.getSecondaryResults().get("gc.alloc.rate.norm");
         Map<String, Object> rec = readCheck(checkFile);
-        long dynamic = scenario.bodies().stream().filter(b -> !b.state().isStatic()).count();
+        long dynamic = org.emini.bench.check.Stability.moving(scenario);
         return result(sceneId, engineId, scenario, dynamic, ms, Double.isNaN(err) ? null : err, median,
             alloc == null ? null : alloc.getScore(), rec);
     }

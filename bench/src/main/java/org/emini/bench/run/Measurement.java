@@ -10,12 +10,12 @@ import java.util.Map;
  * @param status {@code ok}, {@code unsupported}, {@code error} or {@code pending}
  * @param message why, when not ok
  * @param bodies bodies in the scene (static ones included)
- * @param dynamicBodies moving bodies
+ * @param dynamicBodies moving bodies (with particles: plus the particles the emitters keep alive)
  * @param msPerTick JMH's score: mean wall time per tick (ms)
  * @param msPerTickError JMH's 99.9% confidence half-width (ms)
  * @param msPerTickMedian median of the measurement iterations' means (ms)
  * @param cpuMsPerTick the benchmark thread's CPU time per tick over the measurement iterations (ms)
- * @param usPerBody cpuMsPerTick per dynamic body (µs)
+ * @param usPerBody cpuMsPerTick per moving body or particle (µs)
  * @param allocBytesPerTick JMH's gc.alloc.rate.norm (bytes per tick, Java heap only)
  * @param threadBytesPerTick bytes the benchmark thread allocated per measured tick (its exact counter)
  * @param prerollMsPerTick wall time per tick of the untimed run from the scene's start (ms)

@@ -61,4 +61,56 @@ class StabilityTest {
         now[3 * 11] = Double.NaN;
         assertEquals("non-finite", judge(s, now).verdict());
     }
+
+    @Test
+    void aTumblerIsJudgedInItsBoxsFrameByItsEscapesPivotAndSpeed() {
+        Scenario s = SCENES.load("bench/tumbler");
+        int n = s.bodies().size();
+        double[] now = poses(s);
+        double[] omegas = new double[n];
+        omegas[1] = 0.4;
+        Stability st = Stability.judge(s, 1, poses(s), now, new double[n], omegas);
+        assertEquals("stable", st.verdict(), st.toString());
+        assertEquals(10, st.bodySize(), 1e-9, "b is a small body's size, not the box's");
+        // The box turned a quarter (about its pin): everyone inside turned with it, still inside.
+        double[] turned = poses(s);
+        for (int i = 1; i < n; i++) {
+            double dx = now[3 * i], dy = now[3 * i + 1] + 400;
+            turned[3 * i] = -dy;
+            turned[3 * i + 1] = -400 + dx;
+            turned[3 * i + 2] += Math.PI / 2;
+        }
+        assertEquals("stable", Stability.judge(s, 1, poses(s), turned, new double[n], omegas).verdict());
+        // A body beyond the outer walls (270 px from the centre) escaped; one in a wall did not.
+        turned[3 * 5] = 265;
+        turned[3 * 5 + 1] = -400;
+        assertEquals("stable", Stability.judge(s, 1, poses(s), turned, new double[n], omegas).verdict());
+        turned[3 * 5] = 275;
+        Stability out = Stability.judge(s, 1, poses(s), turned, new double[n], omegas);
+        assertEquals("escaped", out.verdict());
+        assertEquals(1, out.escaped());
+        // A box 6% slow, or moved off its pin by a quarter body (2.5 px) and more.
+        omegas[1] = 0.376;
+        Stability slow = Stability.judge(s, 1, poses(s), now, new double[n], omegas);
+        assertEquals("slowed", slow.verdict());
+        assertEquals(0.06, slow.motorSpeedError(), 1e-9);
+        omegas[1] = 0.4;
+        now[3 * 1] += 3;
+        assertEquals("stretched", Stability.judge(s, 1, poses(s), now, new double[n], omegas).verdict());
+    }
+
+    @Test
+    void particlesAreCountedAndJudgedLikeRain() {
+        Scenario s = SCENES.load("bench/particles-10000");
+        double[] now = poses(s);
+        double[] xy = {0, -5, 100, -300, -590, -1};
+        Stability st = Stability.judge(s, 1, poses(s), now, new double[s.bodies().size()], null, xy, 3);
+        assertEquals("stable", st.verdict());
+        assertEquals(3, st.particles());
+        xy[3] = 5;
+        assertEquals("escaped", Stability.judge(s, 1, poses(s), now, new double[s.bodies().size()], null, xy, 3).verdict());
+        xy[4] = Double.NaN;
+        assertEquals("non-finite", Stability.judge(s, 1, poses(s), now, new double[s.bodies().size()], null, xy, 3).verdict());
+        assertEquals(10000, Stability.moving(s));
+    }
 }
