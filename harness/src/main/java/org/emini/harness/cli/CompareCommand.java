@@ -84,6 +84,11 @@ final class CompareCommand implements Callable<Integer> {
         }
         ScenarioLoader loader = library.loader();
         List<Path> files = ScenarioFiles.expand(paths == null || paths.isEmpty() ? List.of(library.root()) : paths);
+        if (files.isEmpty()) {
+            System.err.println("compare: no scene or world files under " + paths);
+            return 1;
+        }
+        files = scenesForTheOracle(files);
         List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
         List<Path> valid = new ArrayList<>();
         for (Path f : files) {
@@ -96,7 +101,8 @@ final class CompareCommand implements Callable<Integer> {
         int threads = Math.max(1, jobs != null ? jobs : Runtime.getRuntime().availableProcessors());
         Path oracleTraces = reports.resolve("traces").resolve("pymunk");
         Path engineTraces = reports.resolve("traces").resolve("emini");
-        OracleRunner.Run oracleRun = new OracleRunner(interpreter, library.schemaFile()).start(valid, oracleTraces, threads);
+        OracleRunner.Run oracleRun = valid.isEmpty() ? null
+            : new OracleRunner(interpreter, library.schemaFile()).start(valid, oracleTraces, threads);
 
         // The engine runs while the oracle does.
         Map<ScenarioLoader.Loaded, Future<SceneResult>> engine = new LinkedHashMap<>();
@@ -111,7 +117,7 @@ final class CompareCommand implements Callable<Integer> {
                     engine.put(l, pool.submit(() -> runEngine(l.scenario(), engineTraces)));
                 }
             }
-            Map<Path, OracleScene> oracle = oracleRun.await();
+            Map<Path, OracleScene> oracle = oracleRun == null ? Map.of() : oracleRun.await();
             List<Comparison.Scene> scenes = new ArrayList<>();
             int width = 10;
             for (ScenarioLoader.Loaded l : loaded) {
@@ -215,5 +221,30 @@ final class CompareCommand implements Callable<Integer> {
             }
             throw new IllegalStateException(e.getCause());
         }
+    }
+
+    /**
+     * The oracle reads scene files itself, so each original world file becomes the scene
+     * {@code convert} writes, under the reports folder ({@code converted/}); other files stay.
+     */
+    private List<Path> scenesForTheOracle(List<Path> files) throws IOException {
+        List<Path> out = new ArrayList<>();
+        for (Path f : files) {
+            if (!ScenarioFiles.isWorldFile(f) || !Files.isRegularFile(f)) {
+                out.add(f);
+                continue;
+            }
+            String name = f.getFileName().toString();
+            Path scene = reports.resolve("converted").resolve(name.substring(0, name.lastIndexOf('.')) + ".yaml");
+            try {
+                String yaml = ScenarioLoader.worldFileScene(f);
+                Files.createDirectories(scene.getParent());
+                Files.writeString(scene, yaml);
+                out.add(scene);
+            } catch (IOException e) {
+                out.add(f); // the loader reports the file's problem in its row
+            }
+        }
+        return out;
     }
 }

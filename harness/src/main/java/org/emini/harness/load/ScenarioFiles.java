@@ -13,10 +13,17 @@ public final class ScenarioFiles {
     private ScenarioFiles() {
     }
 
-    /** Whether a file name is a scene (YAML or JSON, but not the schema). */
+    /** Whether a file name is a scene (YAML or JSON, but not the schema) or an original world file. */
     public static boolean isScene(Path file) {
         String n = file.getFileName().toString();
-        return (n.endsWith(".yaml") || n.endsWith(".yml") || n.endsWith(".json")) && !n.endsWith(".schema.json");
+        return (n.endsWith(".yaml") || n.endsWith(".yml") || n.endsWith(".json")) && !n.endsWith(".schema.json")
+            || isWorldFile(file);
+    }
+
+    /** Whether a file is an original World Designer file (.phy, .world), read through {@code convert}. */
+    public static boolean isWorldFile(Path file) {
+        String n = file.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+        return n.endsWith(".phy") || n.endsWith(".world");
     }
 
     /**

@@ -5,7 +5,11 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.emini.harness.convert.WorldToScenario;
 import org.emini.harness.scenario.Scenario;
+import org.emini.io.PhyFormatException;
+import org.emini.io.PhyReader;
+import org.emini.io.PhyWorld;
 
 /**
  * Reads scenario files: parse (YAML or JSON), validate against the schema, then read into a
@@ -32,16 +36,30 @@ public final class ScenarioLoader {
         }
     }
 
-    /** Loads a file. */
+    /**
+     * Loads a file. An original world file (.phy, .world) is converted as {@code convert} does, with
+     * a run of {@link #WORLD_FILE_SECONDS} and the expectation that it stays stable.
+     */
     public Loaded load(Path file) {
         String shown = shown(file);
         String text;
         try {
-            text = Files.readString(file, StandardCharsets.UTF_8);
+            text = ScenarioFiles.isWorldFile(file) ? worldFileScene(file) : Files.readString(file, StandardCharsets.UTF_8);
+        } catch (PhyFormatException e) {
+            return new Loaded(file, null, List.of(new Problem(shown, 0, 0, "$", "not a valid world file: " + e.getMessage())));
         } catch (IOException e) {
             return new Loaded(file, null, List.of(new Problem(shown, 0, 0, "$", "cannot read: " + e.getMessage())));
         }
         return load(shown, text, defaultName(file));
+    }
+
+    /** Run length of a world file read as a scene: 600 ticks at the original's 20 ticks per second. */
+    public static final double WORLD_FILE_SECONDS = 30;
+
+    /** A world file as scene text (what {@code convert} writes). */
+    public static String worldFileScene(Path file) throws IOException {
+        PhyWorld doc = new PhyReader().read(Files.readAllBytes(file));
+        return WorldToScenario.convert(doc, file.getFileName().toString(), WORLD_FILE_SECONDS).yaml();
     }
 
     /** Loads text (for tests and tools); {@code name} is the scene id when the text gives none. */

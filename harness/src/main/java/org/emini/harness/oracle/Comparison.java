@@ -118,10 +118,10 @@ public final class Comparison {
         boolean incomplete = oracle != null && oracle.incomplete();
         if (oracle != null) {
             for (OracleScene.Note n : oracle.unsupported()) {
-                notes.add("pymunk leaves out " + n.element() + (n.affectsBodies() ? " (changes the motion)" : " (no effect on bodies)"));
+                addOnce(notes, "pymunk leaves out " + n.element() + (n.affectsBodies() ? " (changes the motion)" : " (no effect on bodies)"));
             }
             for (OracleScene.Note n : oracle.approximations()) {
-                notes.add("pymunk approximates " + n.element());
+                addOnce(notes, "pymunk approximates " + n.element());
             }
         }
         if (settings.continuousCollision()) {
@@ -178,6 +178,19 @@ public final class Comparison {
         }
         return new Scene(s.name(), s.file(), s.category(), status, String.join("; ", notes), engineStatus, oracle,
                 settings, model, rows);
+    }
+
+    /** One note per kind: a world with 14 faced segments says so once, with the count. */
+    private static void addOnce(List<String> notes, String note) {
+        for (int i = 0; i < notes.size(); i++) {
+            String n = notes.get(i);
+            if (n.equals(note) || n.startsWith(note + " (x")) {
+                int times = n.equals(note) ? 2 : Integer.parseInt(n.substring(note.length() + 3, n.length() - 1)) + 1;
+                notes.set(i, note + " (x" + times + ")");
+                return;
+            }
+        }
+        notes.add(note);
     }
 
     /** Why two traces of the same scene cannot be compared sample by sample, or null. */

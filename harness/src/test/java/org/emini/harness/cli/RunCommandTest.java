@@ -84,4 +84,22 @@ class RunCommandTest {
         assertEquals(1, run(scenes, dir.resolve("r2")));
         assertEquals(1, Main.execute("validate", "--schema", Repo.schema().toString(), scenes.toString()));
     }
+
+    @Test
+    void anOriginalWorldFileRunsAsAScene(@TempDir Path dir) throws Exception {
+        Path world = Repo.root().resolve("../shared/reference/worlds/test_basic.world").normalize();
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(world), "reference worlds not found: " + world);
+        Path scenes = Files.createDirectories(dir.resolve("worlds"));
+        Files.copy(world, scenes.resolve("test_basic.world"));
+        // A cut file: the loader names the byte where the reader ran out.
+        byte[] bytes = Files.readAllBytes(world);
+        Files.write(scenes.resolve("cut.phy"), java.util.Arrays.copyOf(bytes, bytes.length / 2));
+        Path reports = dir.resolve("reports");
+        assertEquals(1, run(scenes, reports), "the cut file is an error");
+        JsonObject r = results(reports);
+        assertEquals(1, r.getAsJsonObject("summary").get("pass").getAsInt(), r.toString());
+        assertEquals(1, r.getAsJsonObject("summary").get("error").getAsInt(), r.toString());
+        String message = r.getAsJsonArray("scenes").get(0).getAsJsonObject().get("message").getAsString();
+        assertTrue(message.contains("not a valid world file: byte "), message);
+    }
 }
