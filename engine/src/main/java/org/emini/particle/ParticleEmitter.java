@@ -615,9 +615,12 @@ public final class ParticleEmitter {
         float[] sy = startY;
         int n = count;
         int i = 0;
+        // Ages are sums of the timestep, which fall short in float (60 × 0.05 = 2.9999983): a
+        // thousandth of a tick counts as reached, so no particle outlives its lifetime by a tick.
+        float reached = 1e-3f * dt;
         while (i < n) {
             float a = pa[i] + dt;
-            if (a >= pl[i]) {
+            if (a >= pl[i] - reached) {
                 n--;
                 px[i] = px[n];
                 py[i] = py[n];

@@ -144,4 +144,21 @@ class ParticleCountTest {
         assertEquals(x5, e.getX(5));
         assertEquals(150, e.emit(1000));
     }
+
+    @ParameterizedTest
+    @CsvSource({"3, 20", "2, 60", "1.1, 30"})
+    void aParticleDiesInTheTickItsAgeReachesItsLifetime(float lifetime, float ticksPerSecond) {
+        // Summing the timestep in float falls short (60 × 0.05 = 2.9999983): that must not buy a tick.
+        World world = weightless();
+        world.setTicksPerSecond(ticksPerSecond);
+        ParticleEmitter e = ParticleScenes.spray(100, 0.001f, lifetime, 10f, 0f);
+        e.setLifetime(lifetime, 0f);
+        world.addParticleEmitter(e);
+        e.emit(10);
+        int ticks = Math.round(lifetime * ticksPerSecond);
+        ParticleScenes.run(world, ticks - 1);
+        assertEquals(10, e.getParticleCount(), "alive one tick before their lifetime");
+        world.tick();
+        assertEquals(0, e.getParticleCount(), "gone in tick " + ticks);
+    }
 }
