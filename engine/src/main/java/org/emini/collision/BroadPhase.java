@@ -4,8 +4,13 @@ import java.util.Arrays;
 import org.emini.math.EMath;
 
 /**
- * The broadphase: a dynamic AABB tree of proxies with fat AABBs, a move buffer and pair
+ * The broadphase: dynamic AABB trees of proxies with fat AABBs, a move buffer and pair
  * generation for moved proxies only.
+ *
+ * <p>Proxies are <em>static</em> or <em>dynamic</em>, and each kind has its own tree (as in Box2D
+ * v3): pairs of two static proxies are never reported, so a moved static proxy is looked up in the
+ * dynamic tree only, and a query may search one kind alone ({@link #queryStatic},
+ * {@link #queryDynamic}). Proxies are dynamic unless created or marked static.
  *
  * <p>Each proxy stands for one collision shape. The tree stores a <em>fat</em> AABB per proxy: the
  * tight AABB enlarged by {@code margin} on every side and, when the proxy is moved, stretched
@@ -40,6 +45,8 @@ public final class BroadPhase {
     private static final float SHRINK_MARGINS = 4f;
 
     private static final int NULL = -1;
+    private static final int STATIC_TREE = 0;
+    private static final int DYNAMIC_TREE = 1;
     private static final int INITIAL_CAPACITY = 16;
 
     private final float margin;
@@ -59,12 +66,15 @@ public final class BroadPhase {
     private int nodeHighWater;
     private int nodeCount;
     private int freeNodeHead = NULL;
-    private int root = NULL;
+    /** The roots of the two trees, indexed by {@link #STATIC_TREE} and {@link #DYNAMIC_TREE}. */
+    private final int[] roots = {NULL, NULL};
 
     // Proxies, indexed by proxy id. Kept apart from node ids so that proxy ids stay dense.
     /** Leaf node of a live proxy, NULL for a free id. */
     private int[] proxyNode;
     private int[] proxyUserData;
+    /** The tree a live proxy is in: {@link #STATIC_TREE} or {@link #DYNAMIC_TREE}. */
+    private byte[] proxyTree;
     /** Next free proxy id of a free id. */
     private int[] proxyNextFree;
     /** Index in the move buffer, NULL when the proxy has not moved since the last updatePairs. */
@@ -111,6 +121,7 @@ public final class BroadPhase {
         nodeProxy = new int[INITIAL_CAPACITY];
         proxyNode = new int[INITIAL_CAPACITY];
         proxyUserData = new int[INITIAL_CAPACITY];
+        proxyTree = new byte[INITIAL_CAPACITY];
         proxyNextFree = new int[INITIAL_CAPACITY];
         proxyMoveIndex = new int[INITIAL_CAPACITY];
         moveBuffer = new int[INITIAL_CAPACITY];
@@ -144,6 +155,25 @@ public final class BroadPhase {
      * @throws IllegalStateException if called from inside a callback
      */
     public int createProxy(float minX, float minY, float maxX, float maxY, int userData) {
+        return createProxy(minX, minY, maxX, maxY, userData, false);
+    }
+
+    /**
+     * Creates a static or dynamic proxy (see {@link #createProxy(float, float, float, float, int)}).
+     * Two static proxies never make a pair.
+     *
+     * @param minX the left of the tight AABB
+     * @param minY the top of the tight AABB
+     * @param maxX the right of the tight AABB, at least minX
+     * @param maxY the bottom of the tight AABB, at least minY
+     * @param userData a value handed back with the proxy's pairs, typically a shape index
+     * @param isStatic true for a static proxy
+     * @return the new proxy id: the most recently freed id, or else the smallest never used
+     * @throws IllegalArgumentException if a coordinate is NaN or infinite, or min &gt; max
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public int createProxy(
+            float minX, float minY, float maxX, float maxY, int userData, boolean isStatic) {
         checkUnlocked("createProxy");
         checkBox("createProxy", minX, minY, maxX, maxY);
         int proxyId = allocateProxy();
@@ -159,7 +189,9 @@ public final class BroadPhase {
         proxyNode[proxyId] = leaf;
         proxyUserData[proxyId] = userData;
         proxyMoveIndex[proxyId] = NULL;
-        insertLeaf(leaf);
+        int tree = isStatic ? STATIC_TREE : DYNAMIC_TREE;
+        proxyTree[proxyId] = (byte) tree;
+        insertLeaf(leaf, tree);
         bufferMove(proxyId);
         return proxyId;
     }
@@ -177,7 +209,7 @@ public final class BroadPhase {
         checkProxy("destroyProxy", proxyId);
         unbufferMove(proxyId);
         int leaf = proxyNode[proxyId];
-        removeLeaf(leaf);
+        removeLeaf(leaf, proxyTree[proxyId]);
         releaseNode(leaf);
         proxyNode[proxyId] = NULL;
         proxyNextFree[proxyId] = freeProxyHead;
@@ -252,14 +284,50 @@ public final class BroadPhase {
             }
         }
 
-        removeLeaf(leaf);
+        int tree = proxyTree[proxyId];
+        removeLeaf(leaf, tree);
         nodeMinX[leaf] = fatMinX;
         nodeMinY[leaf] = fatMinY;
         nodeMaxX[leaf] = fatMaxX;
         nodeMaxY[leaf] = fatMaxY;
-        insertLeaf(leaf);
+        insertLeaf(leaf, tree);
         bufferMove(proxyId);
         return true;
+    }
+
+    /**
+     * Makes a proxy static or dynamic, moving it to the other tree (its fat AABB is kept) and
+     * into the move buffer when that changes it; does nothing when it already is of that kind.
+     *
+     * @param proxyId a live proxy id
+     * @param isStatic true to make it static
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public void setStatic(int proxyId, boolean isStatic) {
+        checkUnlocked("setStatic");
+        checkProxy("setStatic", proxyId);
+        int tree = isStatic ? STATIC_TREE : DYNAMIC_TREE;
+        if (proxyTree[proxyId] == tree) {
+            return;
+        }
+        int leaf = proxyNode[proxyId];
+        removeLeaf(leaf, proxyTree[proxyId]);
+        proxyTree[proxyId] = (byte) tree;
+        insertLeaf(leaf, tree);
+        bufferMove(proxyId);
+    }
+
+    /**
+     * Whether a proxy is static.
+     *
+     * @param proxyId a live proxy id
+     * @return true if it was created or marked static
+     * @throws IllegalArgumentException if the id is unknown or destroyed
+     */
+    public boolean isStatic(int proxyId) {
+        checkProxy("isStatic", proxyId);
+        return proxyTree[proxyId] == STATIC_TREE;
     }
 
     /**
@@ -301,8 +369,8 @@ public final class BroadPhase {
      *
      * <p>For every proxy in the move buffer (created, moved by {@link #moveProxy} returning true,
      * or touched, and not destroyed since), the tree is queried with its fat AABB. Every pair of
-     * distinct proxies whose fat AABBs overlap and of which at least one is in the move buffer is
-     * reported exactly once, in increasing order of (smaller id, larger id), with the user data of
+     * distinct proxies whose fat AABBs overlap, of which at least one is in the move buffer and at
+     * least one is dynamic, is reported exactly once, in increasing order of (smaller id, larger id), with the user data of
      * the smaller id first. No other pair is reported.
      *
      * @param callback receives the pairs; it must not modify this broadphase
@@ -336,15 +404,25 @@ public final class BroadPhase {
         }
     }
 
-    /** Adds to the pair buffer the pairs of one moved proxy that it owns. */
+    /**
+     * Adds to the pair buffer the pairs of one moved proxy that it owns: with the dynamic proxies,
+     * and with the static ones if it is dynamic itself.
+     */
     private void collectPairs(int queryProxy) {
+        collectPairs(queryProxy, DYNAMIC_TREE);
+        if (proxyTree[queryProxy] == DYNAMIC_TREE) {
+            collectPairs(queryProxy, STATIC_TREE);
+        }
+    }
+
+    private void collectPairs(int queryProxy, int tree) {
         int queryNode = proxyNode[queryProxy];
         float minX = nodeMinX[queryNode];
         float minY = nodeMinY[queryNode];
         float maxX = nodeMaxX[queryNode];
         float maxY = nodeMaxY[queryNode];
         int base = stackTop;
-        push(root);
+        push(roots[tree]);
         while (stackTop > base) {
             int node = stack[--stackTop];
             if (nodeMinX[node] > maxX || minX > nodeMaxX[node]
@@ -371,8 +449,8 @@ public final class BroadPhase {
     }
 
     /**
-     * Reports every proxy whose fat AABB overlaps a box (touching counts), in tree order, until
-     * the callback returns false.
+     * Reports every proxy whose fat AABB overlaps a box (touching counts), in tree order (the
+     * static tree first), until the callback returns false.
      *
      * @param minX the left of the box
      * @param minY the top of the box
@@ -383,14 +461,63 @@ public final class BroadPhase {
      *     is null
      */
     public void query(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
-        checkBox("query", minX, minY, maxX, maxY);
+        checkQuery("query", minX, minY, maxX, maxY, callback);
+        if (queryTree(STATIC_TREE, minX, minY, maxX, maxY, callback)) {
+            queryTree(DYNAMIC_TREE, minX, minY, maxX, maxY, callback);
+        }
+    }
+
+    /**
+     * Like {@link #query}, but reports the static proxies only.
+     *
+     * @param minX the left of the box
+     * @param minY the top of the box
+     * @param maxX the right of the box, at least minX
+     * @param maxY the bottom of the box, at least minY
+     * @param callback receives the proxy ids; it must not modify this broadphase but may query it
+     * @throws IllegalArgumentException if a coordinate is NaN or infinite, min &gt; max, or callback
+     *     is null
+     */
+    public void queryStatic(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        checkQuery("queryStatic", minX, minY, maxX, maxY, callback);
+        queryTree(STATIC_TREE, minX, minY, maxX, maxY, callback);
+    }
+
+    /**
+     * Like {@link #query}, but reports the dynamic proxies only.
+     *
+     * @param minX the left of the box
+     * @param minY the top of the box
+     * @param maxX the right of the box, at least minX
+     * @param maxY the bottom of the box, at least minY
+     * @param callback receives the proxy ids; it must not modify this broadphase but may query it
+     * @throws IllegalArgumentException if a coordinate is NaN or infinite, min &gt; max, or callback
+     *     is null
+     */
+    public void queryDynamic(
+            float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        checkQuery("queryDynamic", minX, minY, maxX, maxY, callback);
+        queryTree(DYNAMIC_TREE, minX, minY, maxX, maxY, callback);
+    }
+
+    private static void checkQuery(
+            String method, float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        checkBox(method, minX, minY, maxX, maxY);
         if (callback == null) {
-            throw new IllegalArgumentException("query: callback is null");
+            throw new IllegalArgumentException(method + ": callback is null");
+        }
+    }
+
+    /** Queries one tree; returns false if the callback stopped the query. */
+    private boolean queryTree(
+            int tree, float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        if (roots[tree] == NULL) {
+            return true;
         }
         int base = stackTop;
         lockDepth++;
         try {
-            push(root);
+            push(roots[tree]);
             while (stackTop > base) {
                 int node = stack[--stackTop];
                 if (nodeMinX[node] > maxX || minX > nodeMaxX[node]
@@ -401,13 +528,14 @@ public final class BroadPhase {
                     push(nodeChild1[node]);
                     push(nodeChild2[node]);
                 } else if (!callback.reportProxy(nodeProxy[node])) {
-                    return;
+                    return false;
                 }
             }
         } finally {
             stackTop = base;
             lockDepth--;
         }
+        return true;
     }
 
     /** Pushes a node on the query stack; the empty tree's NULL root is not pushed. */
@@ -507,13 +635,17 @@ public final class BroadPhase {
     }
 
     /**
-     * The height of the tree: 0 for an empty tree or a single proxy, otherwise the number of edges
-     * on the longest path from the root to a leaf.
+     * The height of the taller of the two trees (static and dynamic): 0 for an empty tree or a
+     * single proxy, otherwise the number of edges on the longest path from the root to a leaf.
      *
      * @return the tree height
      */
     public int getTreeHeight() {
-        return root == NULL ? 0 : nodeHeight[root];
+        return Math.max(treeHeight(STATIC_TREE), treeHeight(DYNAMIC_TREE));
+    }
+
+    private int treeHeight(int tree) {
+        return roots[tree] == NULL ? 0 : nodeHeight[roots[tree]];
     }
 
     /**
@@ -602,9 +734,9 @@ public final class BroadPhase {
      * the child whose perimeter grows least, stopping where pairing up with the current node is
      * cheaper than any descent (the surface-area heuristic, with perimeter as area in 2D).
      */
-    private void insertLeaf(int leaf) {
-        if (root == NULL) {
-            root = leaf;
+    private void insertLeaf(int leaf, int tree) {
+        if (roots[tree] == NULL) {
+            roots[tree] = leaf;
             nodeParent[leaf] = NULL;
             return;
         }
@@ -613,7 +745,7 @@ public final class BroadPhase {
         float maxX = nodeMaxX[leaf];
         float maxY = nodeMaxY[leaf];
 
-        int index = root;
+        int index = roots[tree];
         while (nodeHeight[index] > 0) {
             int child1 = nodeChild1[index];
             int child2 = nodeChild2[index];
@@ -639,19 +771,19 @@ public final class BroadPhase {
         nodeParent[sibling] = newParent;
         nodeParent[leaf] = newParent;
         if (oldParent == NULL) {
-            root = newParent;
+            roots[tree] = newParent;
         } else if (nodeChild1[oldParent] == sibling) {
             nodeChild1[oldParent] = newParent;
         } else {
             nodeChild2[oldParent] = newParent;
         }
-        refitUpwards(newParent);
+        refitUpwards(newParent, tree);
     }
 
-    /** Detaches a leaf from the tree (the leaf node itself stays allocated). */
-    private void removeLeaf(int leaf) {
-        if (leaf == root) {
-            root = NULL;
+    /** Detaches a leaf from its tree (the leaf node itself stays allocated). */
+    private void removeLeaf(int leaf, int tree) {
+        if (leaf == roots[tree]) {
+            roots[tree] = NULL;
             return;
         }
         int parent = nodeParent[leaf];
@@ -661,7 +793,7 @@ public final class BroadPhase {
         releaseNode(parent);
         nodeParent[sibling] = grandParent;
         if (grandParent == NULL) {
-            root = sibling;
+            roots[tree] = sibling;
             return;
         }
         if (nodeChild1[grandParent] == parent) {
@@ -669,13 +801,13 @@ public final class BroadPhase {
         } else {
             nodeChild2[grandParent] = sibling;
         }
-        refitUpwards(grandParent);
+        refitUpwards(grandParent, tree);
     }
 
-    /** Rebalances and refits every node from {@code index} up to the root. */
-    private void refitUpwards(int index) {
+    /** Rebalances and refits every node from {@code index} up to the root of its tree. */
+    private void refitUpwards(int index, int tree) {
         while (index != NULL) {
-            index = balance(index);
+            index = balance(index, tree);
             refit(index);
             index = nodeParent[index];
         }
@@ -696,16 +828,16 @@ public final class BroadPhase {
      * If the children's heights of {@code a} differ by more than one, rotates the taller child up
      * into a's place and returns it; otherwise returns a. The children of a must be up to date.
      */
-    private int balance(int a) {
+    private int balance(int a, int tree) {
         // a's own height may be stale (a new parent), so only its children's heights are used.
         int b = nodeChild1[a];
         int c = nodeChild2[a];
         int diff = nodeHeight[c] - nodeHeight[b];
         if (diff > 1) {
-            return rotateUp(a, c, true);
+            return rotateUp(a, c, true, tree);
         }
         if (diff < -1) {
-            return rotateUp(a, b, false);
+            return rotateUp(a, b, false, tree);
         }
         return a;
     }
@@ -714,7 +846,7 @@ public final class BroadPhase {
      * Rotates child p of a into a's place: p's taller child stays with p, a becomes p's other
      * child and takes p's shorter child in the slot where p was.
      */
-    private int rotateUp(int a, int p, boolean pIsChild2) {
+    private int rotateUp(int a, int p, boolean pIsChild2, int tree) {
         int f = nodeChild1[p];
         int g = nodeChild2[p];
         int keep;
@@ -729,7 +861,7 @@ public final class BroadPhase {
         int up = nodeParent[a];
         nodeParent[p] = up;
         if (up == NULL) {
-            root = p;
+            roots[tree] = p;
         } else if (nodeChild1[up] == a) {
             nodeChild1[up] = p;
         } else {
@@ -788,6 +920,7 @@ public final class BroadPhase {
                 int capacity = proxyHighWater * 2;
                 proxyNode = Arrays.copyOf(proxyNode, capacity);
                 proxyUserData = Arrays.copyOf(proxyUserData, capacity);
+                proxyTree = Arrays.copyOf(proxyTree, capacity);
                 proxyNextFree = Arrays.copyOf(proxyNextFree, capacity);
                 proxyMoveIndex = Arrays.copyOf(proxyMoveIndex, capacity);
             }
@@ -858,7 +991,7 @@ public final class BroadPhase {
     // Validation
 
     /**
-     * Checks every invariant of the tree, the proxy table, the free lists and the move buffer.
+     * Checks every invariant of the trees, the proxy table, the free lists and the move buffer.
      * Meant for tests and debugging; it takes time linear in the number of nodes.
      *
      * @throws IllegalStateException describing the first violation found
@@ -866,7 +999,11 @@ public final class BroadPhase {
     public void validate() {
         int reachable = 0;
         int leaves = 0;
-        if (root != NULL) {
+        for (int tree = STATIC_TREE; tree <= DYNAMIC_TREE; tree++) {
+            int root = roots[tree];
+            if (root == NULL) {
+                continue;
+            }
             checkState(root >= 0 && root < nodeHighWater, "root %d out of range", root, 0);
             checkState(nodeParent[root] == NULL, "root %d has parent %d", root, nodeParent[root]);
             int base = stackTop;
@@ -888,6 +1025,8 @@ public final class BroadPhase {
                         checkState(proxy >= 0 && proxy < proxyHighWater
                                 && proxyNode[proxy] == node,
                                 "leaf %d has proxy %d not pointing back", node, proxy);
+                        checkState(proxyTree[proxy] == tree, "proxy %d is in the wrong tree (%d)",
+                                proxy, tree);
                         continue;
                     }
                     checkState(nodeProxy[node] == NULL, "internal node %d has proxy %d", node,

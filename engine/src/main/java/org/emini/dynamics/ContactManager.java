@@ -95,12 +95,8 @@ final class ContactManager implements PairCallback, QueryCallback {
         c.partB = partB;
         c.pointCount = 0;
         c.filterDirty = false;
-        c.normalImpulse[0] = 0f;
-        c.normalImpulse[1] = 0f;
-        c.tangentImpulse[0] = 0f;
-        c.tangentImpulse[1] = 0f;
-        c.maxNormalImpulse[0] = 0f;
-        c.maxNormalImpulse[1] = 0f;
+        c.setImpulses(0, 0f, 0f, 0f);
+        c.setImpulses(1, 0f, 0f, 0f);
         // Push on the front of both bodies' lists.
         c.prevA = null;
         c.nextA = a.contactList;
@@ -389,23 +385,30 @@ final class ContactManager implements PairCallback, QueryCallback {
 
     private static void update(Contact c, Manifold m, float friction, float restitution) {
         int oldCount = c.pointCount;
-        float n0 = c.normalImpulse[0];
-        float n1 = c.normalImpulse[1];
-        float t0 = c.tangentImpulse[0];
-        float t1 = c.tangentImpulse[1];
-        int id0 = c.id[0];
-        int id1 = c.id[1];
+        float n0 = c.normalImpulse0;
+        float n1 = c.normalImpulse1;
+        float t0 = c.tangentImpulse0;
+        float t1 = c.tangentImpulse1;
+        int id0 = c.id0;
+        int id1 = c.id1;
         c.pointCount = m.pointCount;
         c.normalX = m.normalX;
         c.normalY = m.normalY;
         c.friction = friction;
         c.restitution = restitution;
         for (int p = 0; p < m.pointCount; p++) {
-            c.pointX[p] = m.pointX[p];
-            c.pointY[p] = m.pointY[p];
-            c.separation[p] = m.separation[p];
             int key = m.id[p];
-            c.id[p] = key;
+            if (p == 0) {
+                c.pointX0 = m.pointX[0];
+                c.pointY0 = m.pointY[0];
+                c.separation0 = m.separation[0];
+                c.id0 = key;
+            } else {
+                c.pointX1 = m.pointX[1];
+                c.pointY1 = m.pointY[1];
+                c.separation1 = m.separation[1];
+                c.id1 = key;
+            }
             // Carry the impulse of the same feature pair over for warm starting.
             float ni = 0f;
             float ti = 0f;
@@ -416,9 +419,7 @@ final class ContactManager implements PairCallback, QueryCallback {
                 ni = n1;
                 ti = t1;
             }
-            c.normalImpulse[p] = ni;
-            c.tangentImpulse[p] = ti;
-            c.maxNormalImpulse[p] = 0f;
+            c.setImpulses(p, ni, ti, 0f);
         }
     }
 }

@@ -132,15 +132,17 @@ final class ContactSolver {
             float wb = st[ob + W];
             for (int p = 0; p < c.pointCount; p++) {
                 int po = fo + P0 + p * PS;
-                float rax = c.pointX[p] - a.x;
-                float ray = c.pointY[p] - a.y;
-                float rbx = c.pointX[p] - b.x;
-                float rby = c.pointY[p] - b.y;
+                float cpx = c.pointX(p);
+                float cpy = c.pointY(p);
+                float rax = cpx - a.x;
+                float ray = cpy - a.y;
+                float rbx = cpx - b.x;
+                float rby = cpy - b.y;
                 f[po + RAX] = rax;
                 f[po + RAY] = ray;
                 f[po + RBX] = rbx;
                 f[po + RBY] = rby;
-                f[po + BASE_SEP] = c.separation[p] - ((rbx - rax) * nx + (rby - ray) * ny);
+                f[po + BASE_SEP] = c.separation(p) - ((rbx - rax) * nx + (rby - ray) * ny);
                 float rna = rax * ny - ray * nx;
                 float rnb = rbx * ny - rby * nx;
                 float kn = mA + mB + iA * rna * rna + iB * rnb * rnb;
@@ -151,8 +153,8 @@ final class ContactSolver {
                 float rtb = rbx * nx + rby * ny;
                 float kt = mA + mB + iA * rta * rta + iB * rtb * rtb;
                 f[po + TMASS] = kt > 0f ? 1f / kt : 0f;
-                f[po + NIMP] = c.normalImpulse[p];
-                f[po + TIMP] = c.tangentImpulse[p];
+                f[po + NIMP] = c.normalImpulse(p);
+                f[po + TIMP] = c.tangentImpulse(p);
                 f[po + MAXIMP] = 0f;
                 float dvx = vbx - wb * rby - vax + wa * ray;
                 float dvy = vby + wb * rbx - vay - wa * rax;
@@ -673,9 +675,7 @@ final class ContactSolver {
             int pc = n[k * CI + POINTS];
             for (int p = 0; p < pc; p++) {
                 int po = fo + P0 + p * PS;
-                c.normalImpulse[p] = f[po + NIMP];
-                c.tangentImpulse[p] = f[po + TIMP];
-                c.maxNormalImpulse[p] = f[po + MAXIMP];
+                c.setImpulses(p, f[po + NIMP], f[po + TIMP], f[po + MAXIMP]);
             }
             contacts[k] = null;
         }

@@ -83,7 +83,12 @@ final class ContinuousSolver implements QueryCallback {
             float minY = Math.min(box[1], box2[1]);
             float maxX = Math.max(box[2], box2[2]);
             float maxY = Math.max(box[3], box2[3]);
-            broadPhase.query(minX, minY, maxX, maxY, this);
+            // Only bullets sweep against dynamic bodies; the others search the static tree alone.
+            if (b.isBullet()) {
+                broadPhase.query(minX, minY, maxX, maxY, this);
+            } else {
+                broadPhase.queryStatic(minX, minY, maxX, maxY, this);
+            }
             segments.sweep(minX, minY, maxX, maxY);
             if (fraction < 1f) {
                 float a = a0 + fraction * da;

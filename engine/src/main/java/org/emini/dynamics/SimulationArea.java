@@ -91,7 +91,7 @@ final class SimulationArea implements QueryCallback {
             world = w;
             broadPhase = bp;
             keyCount = 0;
-            bp.query(minX, minY, maxX, maxY, this);
+            bp.queryDynamic(minX, minY, maxX, maxY, this);
             world = null;
             broadPhase = null;
             // World order, so the result does not depend on the tree's shape.

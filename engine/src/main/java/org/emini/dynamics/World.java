@@ -263,7 +263,7 @@ public final class World {
         bodies[bodyCount++] = body;
         body.slot = slot;
         body.getShape().computeAabb(body.x, body.y, body.c, body.s, aabb);
-        body.proxyId = broadPhase.createProxy(aabb[0], aabb[1], aabb[2], aabb[3], slot);
+        body.proxyId = broadPhase.createProxy(aabb[0], aabb[1], aabb[2], aabb[3], slot, !body.isDynamic());
     }
 
     /**
@@ -371,6 +371,7 @@ public final class World {
 
     void bodyFilterChanged(Body b) {
         contacts.markFilterDirty(b);
+        broadPhase.setStatic(b.proxyId, !b.isDynamic());
         broadPhase.touchProxy(b.proxyId);
         ContactManager.forgetLandscape(b);
     }

@@ -29,10 +29,13 @@ import net.jqwik.api.constraints.IntRange;
  */
 class BroadPhaseProperties {
 
-    sealed interface Op permits Create, Move, Destroy, Touch, Update {
+    sealed interface Op permits Create, Move, Destroy, Touch, SetStatic, Update {
     }
 
-    record Create(float x, float y, float w, float h) implements Op {
+    record Create(float x, float y, float w, float h, boolean isStatic) implements Op {
+    }
+
+    record SetStatic(int pick, boolean isStatic) implements Op {
     }
 
     /** Translates by (dx, dy), resizes by (dw, dh), and announces displacement (vx, vy). */
@@ -63,7 +66,11 @@ class BroadPhaseProperties {
         Arbitrary<Float> resize = quarters(-2, 2);
         Arbitrary<Float> disp = quarters(-10, 10);
         Arbitrary<Float> zero = Arbitraries.just(0f);
-        Arbitrary<Op> create = Combinators.combine(coord, coord, size, size).as(Create::new);
+        // About one proxy in four is static.
+        Arbitrary<Boolean> isStatic = Arbitraries.integers().between(0, 3).map(i -> i == 0);
+        Arbitrary<Op> create = Combinators.combine(coord, coord, size, size, isStatic)
+                .as(Create::new);
+        Arbitrary<Op> setStatic = Combinators.combine(pick, isStatic).as(SetStatic::new);
         Arbitrary<Op> smallMove = Combinators.combine(pick, small, small, zero, zero, disp, disp)
                 .as(Move::new);
         Arbitrary<Op> largeMove = Combinators.combine(pick, large, large, resize, resize, disp,
@@ -80,6 +87,7 @@ class BroadPhaseProperties {
                 Tuple.of(1, resizeMove),
                 Tuple.of(2, destroy),
                 Tuple.of(1, touch),
+                Tuple.of(1, setStatic),
                 Tuple.of(2, update)).list().ofMaxSize(200);
     }
 
@@ -111,6 +119,7 @@ class BroadPhaseProperties {
         Map<Integer, float[]> fat = new HashMap<>();
         Map<Integer, Integer> idOfUserData = new HashMap<>();
         Set<Integer> moved = new HashSet<>();
+        Set<Integer> statics = new HashSet<>();
         Deque<Integer> freed = new ArrayDeque<>();
         int highWater = 0;
         int nextUserData = 1000;
@@ -122,10 +131,14 @@ class BroadPhaseProperties {
                 float[] t = {c.x(), c.y(), c.x() + c.w(), c.y() + c.h()};
                 int userData = nextUserData;
                 nextUserData += 7;
-                int id = bp.createProxy(t[0], t[1], t[2], t[3], userData);
+                int id = c.isStatic() ? bp.createProxy(t[0], t[1], t[2], t[3], userData, true)
+                        : bp.createProxy(t[0], t[1], t[2], t[3], userData);
                 int expectedId = freed.isEmpty() ? highWater++ : freed.pop();
                 assertEquals(expectedId, id, "createProxy id");
                 live.add(id);
+                if (c.isStatic()) {
+                    statics.add(id);
+                }
                 tight.put(id, t);
                 fat.put(id, new float[] {t[0] - margin, t[1] - margin, t[2] + margin,
                     t[3] + margin});
@@ -184,6 +197,7 @@ class BroadPhaseProperties {
                 tight.remove(id);
                 fat.remove(id);
                 moved.remove(id);
+                statics.remove(id);
                 freed.push(id);
                 log.add("d" + id);
             } else if (op instanceof Touch t) {
@@ -193,6 +207,17 @@ class BroadPhaseProperties {
                 int id = live.get(t.pick() % live.size());
                 bp.touchProxy(id);
                 moved.add(id);
+            } else if (op instanceof SetStatic ss) {
+                if (live.isEmpty()) {
+                    continue;
+                }
+                int id = live.get(ss.pick() % live.size());
+                bp.setStatic(id, ss.isStatic());
+                // A proxy that changes kind is moved (to the other tree) and its pairs reported.
+                if (ss.isStatic() ? statics.add(id) : statics.remove(id)) {
+                    moved.add(id);
+                }
+                log.add("s" + id + ss.isStatic());
             } else {
                 List<int[]> reported = new ArrayList<>();
                 bp.updatePairs((a, b) -> reported.add(new int[] {a, b}));
@@ -210,6 +235,7 @@ class BroadPhaseProperties {
                         int a = ids.get(i);
                         int b = ids.get(j);
                         if ((moved.contains(a) || moved.contains(b))
+                                && !(statics.contains(a) && statics.contains(b))
                                 && overlap(fat.get(a), fat.get(b))) {
                             expected.add(a + "-" + b);
                         }
@@ -229,6 +255,7 @@ class BroadPhaseProperties {
                 assertArrayEquals(f, new float[] {bp.getFatMinX(id), bp.getFatMinY(id),
                     bp.getFatMaxX(id), bp.getFatMaxY(id)}, "fat AABB of " + id);
                 assertEquals(moved.contains(id), bp.isMoved(id));
+                assertEquals(statics.contains(id), bp.isStatic(id));
             }
         }
         bp.validate();
@@ -275,10 +302,13 @@ class BroadPhaseProperties {
     void queryMatchesBruteForce(@ForAll @IntRange(min = 0, max = 300) int n, @ForAll long seed) {
         Random rnd = new Random(seed);
         BroadPhase bp = new BroadPhase(rnd.nextFloat() * 3f);
+        boolean[] isStatic = new boolean[n];
         for (int i = 0; i < n; i++) {
             float x = rnd.nextFloat() * 500f;
             float y = rnd.nextFloat() * 500f;
-            bp.createProxy(x, y, x + rnd.nextFloat() * 30f, y + rnd.nextFloat() * 30f, i);
+            isStatic[i] = rnd.nextInt(3) == 0;
+            bp.createProxy(x, y, x + rnd.nextFloat() * 30f, y + rnd.nextFloat() * 30f, i,
+                    isStatic[i]);
         }
         for (int q = 0; q < 20; q++) {
             float x = rnd.nextFloat() * 600f - 50f;
@@ -300,6 +330,26 @@ class BroadPhaseProperties {
             assertEquals(expected, found.keySet());
             for (int count : found.values()) {
                 assertEquals(1, count, "each proxy reported once");
+            }
+            for (int kind = 0; kind < 2; kind++) {
+                boolean wantStatic = kind == 0;
+                Set<Integer> some = new TreeSet<>();
+                QueryCallback collect = id -> {
+                    assertTrue(some.add(id), "each proxy reported once");
+                    return true;
+                };
+                if (wantStatic) {
+                    bp.queryStatic(box[0], box[1], box[2], box[3], collect);
+                } else {
+                    bp.queryDynamic(box[0], box[1], box[2], box[3], collect);
+                }
+                Set<Integer> expectedKind = new TreeSet<>();
+                for (int id : expected) {
+                    if (isStatic[id] == wantStatic) {
+                        expectedKind.add(id);
+                    }
+                }
+                assertEquals(expectedKind, some, wantStatic ? "static" : "dynamic");
             }
         }
     }

@@ -624,9 +624,9 @@ class BroadPhaseTest {
         assertTrue(e.getMessage().contains("union"), e.getMessage());
 
         bp = smallTree();
-        Field rootField = BroadPhase.class.getDeclaredField("root");
-        rootField.setAccessible(true);
-        int root = rootField.getInt(bp);
+        Field rootsField = BroadPhase.class.getDeclaredField("roots");
+        rootsField.setAccessible(true);
+        int root = ((int[]) rootsField.get(bp))[1]; // the dynamic tree
         corrupt(bp, "nodeHeight", root, 99);
         e = assertThrows(IllegalStateException.class, bp::validate);
         assertTrue(e.getMessage().contains("height"), e.getMessage());
