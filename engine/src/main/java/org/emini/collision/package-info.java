@@ -1,6 +1,6 @@
 /**
- * Collision detection. {@link org.emini.collision.BroadPhase}, a dynamic tree of fat bounding boxes,
- * finds the pairs of bodies that came close; {@link org.emini.collision.Collider} turns a pair of
+ * Collision detection. {@link org.emini.collision.BroadPhase}, dynamic trees of fat bounding boxes
+ * (one for static bodies, one for moving ones), finds the pairs of bodies that came close; {@link org.emini.collision.Collider} turns a pair of
  * placed shapes into a {@link org.emini.collision.Manifold} of at most two contact points with a
  * shared normal, including speculative points that still have a small gap.
  *
