@@ -1,8 +1,10 @@
 package org.emini.harness.oracle;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.run.Trace;
@@ -117,12 +119,16 @@ public final class Comparison {
         }
         boolean incomplete = oracle != null && oracle.incomplete();
         if (oracle != null) {
+            // One note per kind, with its count: a world of 14 faced segments says so once.
+            Map<String, Integer> kinds = new LinkedHashMap<>();
             for (OracleScene.Note n : oracle.unsupported()) {
-                addOnce(notes, "pymunk leaves out " + n.element() + (n.affectsBodies() ? " (changes the motion)" : " (no effect on bodies)"));
+                kinds.merge("pymunk leaves out " + n.element() + (n.affectsBodies() ? " (changes the motion)" : " (no effect on bodies)"),
+                        1, Integer::sum);
             }
             for (OracleScene.Note n : oracle.approximations()) {
-                addOnce(notes, "pymunk approximates " + n.element());
+                kinds.merge("pymunk approximates " + n.element(), 1, Integer::sum);
             }
+            kinds.forEach((note, times) -> notes.add(times > 1 ? note + " (x" + times + ")" : note));
         }
         if (settings.continuousCollision()) {
             notes.add("tests continuous collision, which pymunk lacks: judged against the reference");
@@ -178,19 +184,6 @@ public final class Comparison {
         }
         return new Scene(s.name(), s.file(), s.category(), status, String.join("; ", notes), engineStatus, oracle,
                 settings, model, rows);
-    }
-
-    /** One note per kind: a world with 14 faced segments says so once, with the count. */
-    private static void addOnce(List<String> notes, String note) {
-        for (int i = 0; i < notes.size(); i++) {
-            String n = notes.get(i);
-            if (n.equals(note) || n.startsWith(note + " (x")) {
-                int times = n.equals(note) ? 2 : Integer.parseInt(n.substring(note.length() + 3, n.length() - 1)) + 1;
-                notes.set(i, note + " (x" + times + ")");
-                return;
-            }
-        }
-        notes.add(note);
     }
 
     /** Why two traces of the same scene cannot be compared sample by sample, or null. */
