@@ -88,7 +88,7 @@ final class ContactManager implements PairCallback, QueryCallback {
     }
 
     private Contact create(Body a, Body b, int partA, int partB) {
-        Contact c = poolCount > 0 ? pool[--poolCount] : new Contact();
+        Contact c = obtain();
         c.bodyA = a;
         c.bodyB = b;
         c.partA = partA;
@@ -122,6 +122,25 @@ final class ContactManager implements PairCallback, QueryCallback {
         c.index = count;
         contacts[count++] = c;
         return c;
+    }
+
+    /**
+     * A contact from the pool. An empty pool is refilled with an eighth of the live count at once:
+     * taking one new object per new peak, a world whose contact count wanders near its peak (a pile
+     * that keeps tumbling) would go on allocating long after it settled.
+     */
+    private Contact obtain() {
+        if (poolCount == 0) {
+            int n = Math.max(16, count >> 3);
+            if (pool.length < n) {
+                pool = new Contact[Math.max(n, 2 * pool.length)];
+            }
+            for (int i = 0; i < n; i++) {
+                pool[i] = new Contact();
+            }
+            poolCount = n;
+        }
+        return pool[--poolCount];
     }
 
     private static void setPrev(Contact k, Body b, Contact prev) {
