@@ -50,7 +50,7 @@ public final class BenchMain implements Callable<Integer> {
     @Option(names = "--no-scaling", description = "Skip the scaling run.")
     boolean noScaling;
 
-    @Option(names = "--resume", description = "Reuse the results a previous run kept in the reports folder (measurements/, or finished JMH logs); run only what is missing.")
+    @Option(names = "--resume", description = "Reuse the results a previous run kept in the reports folder (measurements/, finished JMH logs, pymunk.json when it has every scene); run only what is missing.")
     boolean resume;
 
     @Option(names = "--scaling-cap", split = ",", paramLabel = "ENGINE=N",
@@ -89,7 +89,7 @@ public final class BenchMain implements Callable<Integer> {
                 List<Measurement> scal = new ArrayList<>(old.scaling());
                 scal.removeIf(m -> "pymunk".equals(m.engine()));
                 PymunkBench.Outcome py = PymunkBench.run(scenes, "quick".equals(old.mode()) ? BenchPlan.QUICK : BenchPlan.FULL, out,
-                    pymunkScenes(table, scal));
+                    pymunkScenes(table, scal), false);
                 System.out.println("pymunk: " + py.status() + ": " + py.message());
                 old = new BenchReport(old.format(), old.version(), old.generated(), old.mode(), old.jmh(), old.machine(),
                     old.loadAverageEnd(), old.seconds(), withPymunk(table, py), scalingWithPymunk(scal, py), py.summary());
@@ -172,7 +172,7 @@ public final class BenchMain implements Callable<Integer> {
         // pymunk (through the oracle) on the scenes that ran, at the same scaling points.
         boolean wantPymunk = engines == null || engines.contains("pymunk");
         PymunkBench.Outcome py = PymunkBench.run(scenes, mode, out,
-            wantPymunk ? pymunkScenes(table, scalingResults) : List.of());
+            wantPymunk ? pymunkScenes(table, scalingResults) : List.of(), resume);
         System.out.println("pymunk: " + py.status() + ": " + py.message());
         List<String> shown = new ArrayList<>(engineIds);
         if (!py.measurements().isEmpty()) {

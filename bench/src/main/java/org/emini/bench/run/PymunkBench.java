@@ -30,10 +30,43 @@ final class PymunkBench {
         }
     }
 
+    private static final String MESSAGE = "pymunk timed from Python with the oracle's builder (bench/pymunk/pymunk_bench.py): "
+        + "CPU time of the Python process per tick; no allocation figure";
+
     private PymunkBench() {
     }
 
-    static Outcome run(BenchScenes scenes, BenchPlan.Mode mode, Path out, List<String> sceneIds) {
+    private static List<Measurement> read(Path result) throws IOException {
+        return new Gson().fromJson(Files.readString(result, StandardCharsets.UTF_8), new TypeToken<List<Measurement>>() { }.getType());
+    }
+
+    /** The kept measurements of exactly these scenes, or null unless the file has them all. */
+    private static List<Measurement> kept(Path result, List<String> sceneIds) {
+        if (!Files.isRegularFile(result)) {
+            return null;
+        }
+        List<Measurement> all;
+        try {
+            all = read(result);
+        } catch (IOException | RuntimeException e) {
+            return null;
+        }
+        List<Measurement> out = new ArrayList<>();
+        for (String id : sceneIds) {
+            Measurement m = all == null ? null : all.stream().filter(x -> id.equals(x.scene())).findFirst().orElse(null);
+            if (m == null || !"ok".equals(m.status())) {
+                return null;
+            }
+            out.add(m);
+        }
+        return out;
+    }
+
+    /**
+     * Times pymunk on the scenes, or with {@code resume} reuses the {@code pymunk.json} an earlier run
+     * left in {@code out} when it has every one of them.
+     */
+    static Outcome run(BenchScenes scenes, BenchPlan.Mode mode, Path out, List<String> sceneIds, boolean resume) {
         Path root = scenes.root();
         Path oracle = root.resolve("oracle-py");
         if (!Files.isDirectory(oracle)) {
@@ -43,9 +76,15 @@ final class PymunkBench {
         if (sceneIds.isEmpty()) {
             return new Outcome("skipped", "no scene to time", List.of());
         }
+        Path result = out.resolve("pymunk.json");
+        if (resume) {
+            List<Measurement> kept = kept(result, sceneIds);
+            if (kept != null) {
+                return new Outcome("ran", MESSAGE + " (kept from an earlier run by --resume)", kept);
+            }
+        }
         try {
             Path python = environment(oracle, out);
-            Path result = out.resolve("pymunk.json");
             Files.deleteIfExists(result);
             List<String> cmd = new ArrayList<>(List.of(python.toString(), root.resolve("bench/pymunk/pymunk_bench.py").toString(),
                 "--root", root.toString(), "--out", result.toString()));
@@ -61,10 +100,7 @@ final class PymunkBench {
                 p.destroy();
                 return new Outcome("error", "pymunk_bench.py failed (exit " + (p.isAlive() ? "timeout" : p.exitValue()) + ")", List.of());
             }
-            List<Measurement> ms = new Gson().fromJson(Files.readString(result, StandardCharsets.UTF_8),
-                new TypeToken<List<Measurement>>() { }.getType());
-            return new Outcome("ran", "pymunk timed from Python with the oracle's builder (bench/pymunk/pymunk_bench.py): "
-                + "CPU time of the Python process per tick; no allocation figure", ms);
+            return new Outcome("ran", MESSAGE, read(result));
         } catch (IOException e) {
             return new Outcome("error", "cannot run pymunk: " + e.getMessage(), List.of());
         } catch (InterruptedException e) {
