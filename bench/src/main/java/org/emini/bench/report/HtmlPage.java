@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.emini.bench.run.Measurement;
+import org.emini.harness.report.LogLogSlope;
 
 /** The static report page: opens from the file system, no script, plots as SVG files beside it. */
 public final class HtmlPage {
@@ -164,22 +165,13 @@ public final class HtmlPage {
 
     /** Least-squares slope of log time against log bodies for an engine, or null. */
     public static Double slope(List<Measurement> scaling, String engine) {
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        int n = 0;
+        LogLogSlope s = new LogLogSlope();
         for (Measurement m : scaling) {
-            if (m.engine().equals(engine) && m.cost() != null && m.dynamicBodies() > 0) {
-                double x = Math.log(m.dynamicBodies()), y = Math.log(m.cost());
-                sx += x;
-                sy += y;
-                sxx += x * x;
-                sxy += x * y;
-                n++;
+            if (m.engine().equals(engine) && m.cost() != null) {
+                s.add(m.dynamicBodies(), m.cost());
             }
         }
-        if (n < 2) {
-            return null;
-        }
-        return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+        return s.slope();
     }
 
     private static String check(Map<String, Object> c) {

@@ -22,8 +22,8 @@ import org.emini.harness.sweep.WorkPrecisionPlots;
 
 /**
  * Writes the static dashboard: {@code reports/index.html} (the page, from this package's resource) and
- * {@code reports/dashboard/} ({@code data.js} with the verdicts, comparison, sweep points and stability
- * maps; {@code replay/*.js} with each scene's shapes and the engine's and oracle's traces, thinned to at
+ * {@code reports/dashboard/} ({@code data.js} with the verdicts, comparison, sweep points, stability
+ * maps and the speed benchmark's summary ({@link BenchSummary}); {@code replay/*.js} with each scene's shapes and the engine's and oracle's traces, thinned to at
  * most {@link #MAX_FRAMES} frames). Everything is loaded by {@code <script>} tags, so the page opens
  * from the file system with no server and no network.
  */
@@ -39,7 +39,7 @@ public final class DashboardWriter {
 
     /**
      * @param reports the reports folder ({@code results.json}, {@code traces/}, {@code compare/},
-     *     {@code sweep/}, {@code stability/} as the commands left them)
+     *     {@code sweep/}, {@code stability/}, {@code bench/} as the commands left them)
      * @param loader reads scene files (for the shapes a replay draws)
      * @param libraryRoot the scenarios folder (scene files in results.json are relative to the working directory)
      */
@@ -74,6 +74,7 @@ public final class DashboardWriter {
             }
         }
         data.add("stability", stability);
+        data.add("bench", BenchSummary.read(reports));
         List<SweepPoint> points = PointStore.loadAll(reports.resolve("sweep"));
         JsonArray pts = new JsonArray();
         JsonObject plots = new JsonObject();
