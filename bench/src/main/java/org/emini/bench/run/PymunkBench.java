@@ -41,7 +41,7 @@ final class PymunkBench {
     }
 
     /** The kept measurements of exactly these scenes, or null unless the file has them all. */
-    private static List<Measurement> kept(Path result, List<String> sceneIds) {
+    static List<Measurement> kept(Path result, List<String> sceneIds) {
         if (!Files.isRegularFile(result)) {
             return null;
         }
