@@ -14,7 +14,7 @@ import org.emini.bench.run.Measurement;
  * @param jmh the JMH settings used
  * @param machine CPU, cores, memory, OS, JVM, load average at the start
  * @param loadAverageEnd the 1-minute load average at the end
- * @param seconds how long the run took
+ * @param seconds how long the run took (a resumed run: with the runs whose figures it kept)
  * @param scenes the comparison table, one entry per scene
  * @param scaling the rain series, every engine at every count
  * @param pymunk the Python engine's status and figures

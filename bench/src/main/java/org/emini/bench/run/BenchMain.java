@@ -180,8 +180,10 @@ public final class BenchMain implements Callable<Integer> {
             table = withPymunk(table, py);
             scalingResults = scalingWithPymunk(scalingResults, py);
         }
+        // A resumed run's figures include the kept ones: count the time that measured them too.
+        double seconds = (System.nanoTime() - start) / 1e9 + (resume ? earlierSeconds(out) : 0);
         BenchReport report = new BenchReport("emini-bench", 1, Instant.now().truncatedTo(ChronoUnit.SECONDS).toString(),
-            mode.quick() ? "quick" : "full", jmh, machine, Machine.loadAverage(), (System.nanoTime() - start) / 1e9,
+            mode.quick() ? "quick" : "full", jmh, machine, Machine.loadAverage(), seconds,
             table, scalingResults, py.summary());
         write(out, report, shown);
         System.out.printf(Locale.ROOT, "wrote %s and %s (%.0f s)%n", out.resolve("bench.json"), out.resolve("index.html"), report.seconds());
@@ -228,6 +230,17 @@ public final class BenchMain implements Callable<Integer> {
             }
         }
         return out;
+    }
+
+    /** The run time the bench.json in the folder records, or 0 when there is none to read. */
+    private static double earlierSeconds(Path out) {
+        try {
+            BenchReport old = new GsonBuilder().serializeSpecialFloatingPointValues().create()
+                .fromJson(Files.readString(out.resolve("bench.json"), StandardCharsets.UTF_8), BenchReport.class);
+            return old == null ? 0 : old.seconds();
+        } catch (IOException | RuntimeException e) {
+            return 0;
+        }
     }
 
     /** Writes bench.json, the plots, index.html and RESULTS.md (the tables in Markdown). */
