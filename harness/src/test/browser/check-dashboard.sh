@@ -2,7 +2,8 @@
 # Opens a written dashboard (REPORTS/index.html) from the file system in headless Chromium, lets the
 # page's own self-test (#selftest) run (it starts the replay and checks every section), and fails
 # unless the page reports no script errors, every section filled, the plots loaded and the replay
-# moving (and, with EMINI_REQUIRE_ORACLE set, the oracle's points and maps present). Installs Debian's
+# moving (and, with EMINI_REQUIRE_ORACLE set, the oracle's points and maps present; with
+# EMINI_REQUIRE_BENCH set, the benchmark's table in the Speed section). Installs Debian's
 # chromium first when /usr/bin/chromium is missing.
 #   harness/src/test/browser/check-dashboard.sh REPORTS [SCREENSHOT.png]
 set -euo pipefail
@@ -35,6 +36,13 @@ if [ -n "${EMINI_REQUIRE_ORACLE:-}" ]; then
   case "$result" in
     *'"oraclePoints":0,'*|*'"oraclePoints":0}'*|*'"oracleMapTables":0,'*)
       echo "check-dashboard: FAILED: no pymunk sweep points or stability maps on the page" >&2; exit 1 ;;
+  esac
+fi
+# With EMINI_REQUIRE_BENCH set the reports folder holds a benchmark report: the Speed section must show it.
+if [ -n "${EMINI_REQUIRE_BENCH:-}" ]; then
+  case "$result" in
+    *'"bench":false'*|*'"speedRows":0'*)
+      echo "check-dashboard: FAILED: no benchmark table in the Speed section" >&2; exit 1 ;;
   esac
 fi
 case "$result" in
