@@ -14,14 +14,21 @@ import org.emini.bench.run.Measurement;
  * @param jmh the JMH settings used
  * @param machine CPU, cores, memory, OS, JVM, load average at the start
  * @param loadAverageEnd the 1-minute load average at the end
- * @param seconds how long the run took (a resumed run: with the runs whose figures it kept)
+ * @param seconds how long the run took
  * @param scenes the comparison table, one entry per scene
  * @param scaling the rain series, every engine at every count
  * @param pymunk the Python engine's status and figures
+ * @param resumed true when the run ({@code --resume}) kept figures an earlier run measured, whose time
+ *     {@code seconds} does not count
  */
 public record BenchReport(String format, int version, String generated, String mode, Map<String, Object> jmh,
                           Map<String, Object> machine, double loadAverageEnd, double seconds, List<SceneEntry> scenes,
-                          List<Measurement> scaling, Map<String, Object> pymunk) {
+                          List<Measurement> scaling, Map<String, Object> pymunk, boolean resumed) {
+
+    /** The run's time as the page and the tables print it, saying when it kept earlier figures. */
+    public String runTime() {
+        return String.format(java.util.Locale.ROOT, "%.0f s", seconds) + (resumed ? ", resumed with figures kept from an earlier run" : "");
+    }
 
     /**
      * One scene of the table.

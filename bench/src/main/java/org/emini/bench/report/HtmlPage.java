@@ -23,7 +23,7 @@ public final class HtmlPage {
             .append(".stable{color:#1a7f37}.drifted{color:#b35900}.collapsed,.escaped,.stretched,.slowed,.non-finite,.error{color:#c00;font-weight:bold}")
             .append(".muted{color:#777}code{background:#f3f3f3;padding:0 3px}</style></head><body>\n");
         h.append("<h1>Emini benchmarks</h1>\n<p>").append(esc(r.generated())).append(" · mode <b>").append(r.mode())
-            .append("</b> · ").append(String.format(Locale.ROOT, "%.0f s", r.seconds())).append("</p>\n");
+            .append("</b> · ").append(esc(r.runTime())).append("</p>\n");
         if ("quick".equals(r.mode())) {
             h.append("<p><b>Quick mode</b>: short iterations in one JVM and a short preroll: a check that everything runs, ")
                 .append("not figures to publish.</p>\n");

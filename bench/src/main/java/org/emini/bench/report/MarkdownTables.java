@@ -16,7 +16,7 @@ public final class MarkdownTables {
         StringBuilder md = new StringBuilder();
         Map<String, Object> m = r.machine();
         md.append("Measured ").append(r.generated()).append(" (").append(r.mode()).append(" mode, ")
-            .append(String.format(Locale.ROOT, "%.0f s", r.seconds())).append(") on ").append(m.get("cpu")).append(", ")
+            .append(r.runTime()).append(") on ").append(m.get("cpu")).append(", ")
             .append(m.get("cores")).append(" cores, ").append(m.get("memoryGiB")).append(" GiB, ").append(m.get("jvm"))
             .append("; load average ").append(HtmlPage.fmt(((Number) m.get("loadAverage")).doubleValue())).append(" at the start, ")
             .append(HtmlPage.fmt(r.loadAverageEnd())).append(" at the end. JMH ").append(r.jmh()).append(".\n\n");

@@ -76,8 +76,7 @@ public final class BenchMain implements Callable<Integer> {
         BenchPlan.Mode mode = quick ? BenchPlan.QUICK : BenchPlan.FULL;
         Path out = reports != null ? reports : scenes.root().resolve("reports").resolve("bench");
         if (render || addPymunk) {
-            BenchReport old = new GsonBuilder().serializeSpecialFloatingPointValues().create()
-                .fromJson(Files.readString(out.resolve("bench.json"), StandardCharsets.UTF_8), BenchReport.class);
+            BenchReport old = readReport(out);
             List<String> shown = new ArrayList<>(Engines.ALL);
             if (addPymunk) {
                 List<BenchReport.SceneEntry> table = new ArrayList<>();
@@ -92,7 +91,8 @@ public final class BenchMain implements Callable<Integer> {
                     pymunkScenes(table, scal), false);
                 System.out.println("pymunk: " + py.status() + ": " + py.message());
                 old = new BenchReport(old.format(), old.version(), old.generated(), old.mode(), old.jmh(), old.machine(),
-                    old.loadAverageEnd(), old.seconds(), withPymunk(table, py), scalingWithPymunk(scal, py), py.summary());
+                    old.loadAverageEnd(), old.seconds(), withPymunk(table, py), scalingWithPymunk(scal, py), py.summary(),
+                    old.resumed());
                 Files.writeString(out.resolve("bench.json"),
                     new GsonBuilder().setPrettyPrinting().serializeNulls().serializeSpecialFloatingPointValues().create().toJson(old),
                     StandardCharsets.UTF_8);
@@ -180,11 +180,9 @@ public final class BenchMain implements Callable<Integer> {
             table = withPymunk(table, py);
             scalingResults = scalingWithPymunk(scalingResults, py);
         }
-        // A resumed run's figures include the kept ones: count the time that measured them too.
-        double seconds = (System.nanoTime() - start) / 1e9 + (resume ? earlierSeconds(out) : 0);
         BenchReport report = new BenchReport("emini-bench", 1, Instant.now().truncatedTo(ChronoUnit.SECONDS).toString(),
-            mode.quick() ? "quick" : "full", jmh, machine, Machine.loadAverage(), seconds,
-            table, scalingResults, py.summary());
+            mode.quick() ? "quick" : "full", jmh, machine, Machine.loadAverage(), (System.nanoTime() - start) / 1e9,
+            table, scalingResults, py.summary(), runner.reused() > 0 || py.kept());
         write(out, report, shown);
         System.out.printf(Locale.ROOT, "wrote %s and %s (%.0f s)%n", out.resolve("bench.json"), out.resolve("index.html"), report.seconds());
         return failed ? 1 : 0;
@@ -232,15 +230,10 @@ public final class BenchMain implements Callable<Integer> {
         return out;
     }
 
-    /** The run time the bench.json in the folder records, or 0 when there is none to read. */
-    private static double earlierSeconds(Path out) {
-        try {
-            BenchReport old = new GsonBuilder().serializeSpecialFloatingPointValues().create()
-                .fromJson(Files.readString(out.resolve("bench.json"), StandardCharsets.UTF_8), BenchReport.class);
-            return old == null ? 0 : old.seconds();
-        } catch (IOException | RuntimeException e) {
-            return 0;
-        }
+    /** The bench.json of the reports folder. */
+    private static BenchReport readReport(Path out) throws IOException {
+        return new GsonBuilder().serializeSpecialFloatingPointValues().create()
+            .fromJson(Files.readString(out.resolve("bench.json"), StandardCharsets.UTF_8), BenchReport.class);
     }
 
     /** Writes bench.json, the plots, index.html and RESULTS.md (the tables in Markdown). */

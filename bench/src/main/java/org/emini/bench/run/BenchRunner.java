@@ -34,6 +34,8 @@ public final class BenchRunner {
     private final BenchPlan.Mode mode;
     private final Path checks;
     private final Path log;
+    // Results measure() took from an earlier run instead of measuring.
+    private int reused;
 
     /**
      * @param scenes the library
@@ -61,6 +63,7 @@ public final class BenchRunner {
                     ? gson.fromJson(Files.readString(kept, StandardCharsets.UTF_8), Measurement.class)
                     : fromLogs(sceneId, engineId);
                 if (m != null) {
+                    reused++;
                     return m;
                 }
             }
@@ -71,6 +74,11 @@ public final class BenchRunner {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /** How many results {@link #measure} reused from an earlier run instead of measuring. */
+    public int reused() {
+        return reused;
     }
 
     /** A finished run's result read back from JMH's log and the check file, or null. */

@@ -21,7 +21,11 @@ import org.emini.bench.scene.BenchScenes;
  */
 final class PymunkBench {
     /** What the run found: status, message, and the measurements (scene ids as asked). */
-    record Outcome(String status, String message, List<Measurement> measurements) {
+    record Outcome(String status, String message, List<Measurement> measurements, boolean kept) {
+        Outcome(String status, String message, List<Measurement> measurements) {
+            this(status, message, measurements, false);
+        }
+
         Map<String, Object> summary() {
             Map<String, Object> m = new LinkedHashMap<>();
             m.put("status", status);
@@ -51,9 +55,12 @@ final class PymunkBench {
         } catch (IOException | RuntimeException e) {
             return null;
         }
+        if (all == null) {
+            return null;
+        }
         List<Measurement> out = new ArrayList<>();
         for (String id : sceneIds) {
-            Measurement m = all == null ? null : all.stream().filter(x -> id.equals(x.scene())).findFirst().orElse(null);
+            Measurement m = all.stream().filter(x -> id.equals(x.scene())).findFirst().orElse(null);
             if (m == null || !"ok".equals(m.status())) {
                 return null;
             }
@@ -80,7 +87,7 @@ final class PymunkBench {
         if (resume) {
             List<Measurement> kept = kept(result, sceneIds);
             if (kept != null) {
-                return new Outcome("ran", MESSAGE + " (kept from an earlier run by --resume)", kept);
+                return new Outcome("ran", MESSAGE + " (kept from an earlier run by --resume)", kept, true);
             }
         }
         try {

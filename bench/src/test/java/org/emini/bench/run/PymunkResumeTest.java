@@ -29,6 +29,7 @@ class PymunkResumeTest {
         assertEquals("ran", o.status());
         assertTrue(o.message().contains("kept from an earlier run"), o.message());
         assertEquals(1, o.measurements().size());
+        assertTrue(o.kept(), "the report says the run was resumed");
     }
 
     @Test
