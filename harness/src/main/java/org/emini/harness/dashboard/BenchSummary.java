@@ -7,17 +7,19 @@ import com.google.gson.JsonParseException;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.emini.harness.report.LogLogSlope;
 
 /**
  * What the dashboard shows of the speed benchmark ({@code ./emini bench}, which writes
- * {@code REPORTS/bench/bench.json}): per scene and engine the CPU time per tick, the allocation per
- * tick and the scene check's verdict; the scaling series with each engine's log-log slope; the
- * machine and load it was measured under; and the benchmark's own page and plots when present.
+ * {@code REPORTS/bench/bench.json}): per scene and engine the CPU time per tick, the benchmark
+ * thread's allocation per tick and the scene check's verdict; the scaling series with each engine's
+ * log-log slope; the machine and load it was measured under; and the benchmark's own page and plots
+ * when present.
  * Read as plain JSON: the harness does not depend on the benchmark module, which depends on it.
  */
 final class BenchSummary {
@@ -47,13 +49,13 @@ final class BenchSummary {
         JsonObject out = new JsonObject();
         copy(bench, out, "generated");
         copy(bench, out, "mode");
-        copy(bench, out, "seconds");
+        copy(bench, out, "resumed");
         copy(bench, out, "loadAverageEnd");
         JsonObject machine = bench.getAsJsonObject("machine");
         if (machine != null) {
             out.add("machine", machine.deepCopy());
         }
-        List<String> engines = new ArrayList<>();
+        Set<String> engines = new LinkedHashSet<>();
         JsonArray scenes = new JsonArray();
         for (JsonElement e : array(bench, "scenes")) {
             JsonObject s = e.getAsJsonObject();
@@ -66,9 +68,7 @@ final class BenchSummary {
             for (JsonElement r : array(s, "results")) {
                 JsonObject m = r.getAsJsonObject();
                 String engine = m.get("engine").getAsString();
-                if (!engines.contains(engine)) {
-                    engines.add(engine);
-                }
+                engines.add(engine);
                 cells.add(engine, cell(m));
             }
             row.add("results", cells);
@@ -76,7 +76,6 @@ final class BenchSummary {
         }
         out.add("scenes", scenes);
         Map<String, JsonArray> points = new LinkedHashMap<>();
-        Map<String, LogLogSlope> slopes = new LinkedHashMap<>();
         for (JsonElement e : array(bench, "scaling")) {
             JsonObject m = e.getAsJsonObject();
             Double cost = cost(m);
@@ -89,16 +88,17 @@ final class BenchSummary {
             p.add(bodies);
             p.add(cost);
             points.computeIfAbsent(engine, k -> new JsonArray()).add(p);
-            slopes.computeIfAbsent(engine, k -> new LogLogSlope()).add(bodies, cost);
-            if (!engines.contains(engine)) {
-                engines.add(engine);
-            }
+            engines.add(engine);
         }
         JsonObject scaling = new JsonObject();
         for (Map.Entry<String, JsonArray> en : points.entrySet()) {
+            LogLogSlope fit = new LogLogSlope();
+            for (JsonElement p : en.getValue()) {
+                fit.add(p.getAsJsonArray().get(0).getAsDouble(), p.getAsJsonArray().get(1).getAsDouble());
+            }
             JsonObject s = new JsonObject();
             s.add("points", en.getValue());
-            Double slope = slopes.get(en.getKey()).slope();
+            Double slope = fit.slope();
             if (slope != null) {
                 s.addProperty("slope", slope);
             }
@@ -130,16 +130,10 @@ final class BenchSummary {
         if (cost != null) {
             c.addProperty("cpuMsPerTick", cost);
         }
-        copy(m, c, "usPerBody");
         copy(m, c, "threadBytesPerTick");
-        copy(m, c, "allocBytesPerTick");
         JsonObject check = m.has("check") && m.get("check").isJsonObject() ? m.getAsJsonObject("check") : null;
         if (check != null && check.has("verdict")) {
             c.add("verdict", check.get("verdict"));
-        }
-        JsonObject after = m.has("afterRun") && m.get("afterRun").isJsonObject() ? m.getAsJsonObject("afterRun") : null;
-        if (after != null && after.has("verdict")) {
-            c.add("verdictAfterRun", after.get("verdict"));
         }
         return c;
     }

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
 class BenchSummaryTest {
     private static final String REPORT = "{\"format\": \"emini-bench\", \"version\": 1, \"generated\": \"2026-11-24T13:30:00Z\","
         + " \"mode\": \"full\", \"machine\": {\"cpu\": \"AMD EPYC\", \"cores\": 2.0, \"loadAverage\": 1.0},"
-        + " \"loadAverageEnd\": 1.5, \"seconds\": 3000,"
+        + " \"loadAverageEnd\": 1.5, \"seconds\": 3000, \"resumed\": true,"
         + " \"scenes\": ["
         + "  {\"id\": \"bench/pyramid-20\", \"title\": \"20-row pyramid\", \"status\": \"ran\", \"message\": \"\", \"results\": ["
         + "    {\"engine\": \"emini\", \"status\": \"ok\", \"cpuMsPerTick\": 0.4, \"msPerTick\": 0.5, \"threadBytesPerTick\": 0.0,"
@@ -49,6 +49,7 @@ class BenchSummaryTest {
         JsonObject s = BenchSummary.read(reports);
         assertEquals("2026-11-24T13:30:00Z", s.get("generated").getAsString());
         assertEquals("AMD EPYC", s.getAsJsonObject("machine").get("cpu").getAsString());
+        assertTrue(s.get("resumed").getAsBoolean(), "the page says when figures were kept from an earlier run");
         assertEquals("[\"emini\",\"dyn4j\",\"jbox2d\",\"pymunk\"]", s.get("engines").toString());
 
         JsonObject pyramid = s.getAsJsonArray("scenes").get(0).getAsJsonObject().getAsJsonObject("results");
