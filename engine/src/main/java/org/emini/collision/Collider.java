@@ -2,6 +2,7 @@ package org.emini.collision;
 
 import org.emini.math.EMath;
 import org.emini.shape.Circle;
+import org.emini.shape.MultiShape;
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 
@@ -70,6 +71,40 @@ public final class Collider {
             throw new IllegalArgumentException("Collider.collide: no narrowphase for shape types "
                     + ta + " and " + tb);
         }
+    }
+
+    /**
+     * Whether two placed shapes of any kind overlap (touching counts), multi-shapes part by part:
+     * the exact overlap test behind sensors.
+     *
+     * @param a shape A
+     * @param ax the world x of A's local origin (px)
+     * @param ay the world y of A's local origin (px)
+     * @param ac cos of A's rotation
+     * @param as sin of A's rotation
+     * @param b shape B
+     * @param bx the world x of B's local origin (px)
+     * @param by the world y of B's local origin (px)
+     * @param bc cos of B's rotation
+     * @param bs sin of B's rotation
+     * @param scratch receives the last part pair's contact (a scratch the caller owns)
+     * @return whether some part of A overlaps some part of B
+     */
+    public boolean overlaps(Shape a, float ax, float ay, float ac, float as, Shape b, float bx,
+            float by, float bc, float bs, Manifold scratch) {
+        int na = a.getType() == Shape.TYPE_MULTI ? ((MultiShape) a).getShapeCount() : 1;
+        int nb = b.getType() == Shape.TYPE_MULTI ? ((MultiShape) b).getShapeCount() : 1;
+        for (int i = 0; i < na; i++) {
+            Shape pa = a.getType() == Shape.TYPE_MULTI ? ((MultiShape) a).getShape(i) : a;
+            for (int j = 0; j < nb; j++) {
+                Shape pb = b.getType() == Shape.TYPE_MULTI ? ((MultiShape) b).getShape(j) : b;
+                collide(pa, ax, ay, ac, as, pb, bx, by, bc, bs, 0f, scratch);
+                if (scratch.pointCount > 0) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**

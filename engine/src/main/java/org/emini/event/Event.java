@@ -502,8 +502,7 @@ public final class Event {
         if (bb[0] > sb[2] || bb[2] < sb[0] || bb[1] > sb[3] || bb[3] < sb[1]) {
             return false;
         }
-        collider.collide(ss, sx, sy, sc, sn, bs, b.getX(), b.getY(), b.getCos(), b.getSin(), 0f, manifold);
-        return manifold.pointCount > 0;
+        return collider.overlaps(ss, sx, sy, sc, sn, bs, b.getX(), b.getY(), b.getCos(), b.getSin(), manifold);
     }
 
     @Override
