@@ -32,6 +32,10 @@ public final class Joint extends TwoBodyConstraint {
     private float accX;
     private float accY;
     private float accAngle;
+    // The impulses this substep warm-started with: the relax pass reports the change from them.
+    private float warmX;
+    private float warmY;
+    private float warmAngle;
     private float tickX;
     private float tickY;
     private float tickAngle;
@@ -135,6 +139,9 @@ public final class Joint extends TwoBodyConstraint {
         accX *= scale;
         accY *= scale;
         accAngle *= scale;
+        warmX = accX;
+        warmY = accY;
+        warmAngle = accAngle;
         arms(step);
         applyLinear(step, accX, accY);
         step.applyAngularImpulse(ia, -accAngle);
@@ -165,7 +172,7 @@ public final class Joint extends TwoBodyConstraint {
             tickAngle += impulse;
             step.applyAngularImpulse(ia, -impulse);
             step.applyAngularImpulse(ib, impulse);
-            change = Math.abs(impulse / axialMass) * radius;
+            change = useBias ? 0f : Math.abs((accAngle - warmAngle) / axialMass) * radius;
         }
 
         arms(step);
@@ -190,10 +197,12 @@ public final class Joint extends TwoBodyConstraint {
             tickX += px;
             tickY += py;
             applyLinear(step, px, py);
-            // The change of the anchors' relative velocity is K times the impulse.
-            float dvx = Math.abs(k11 * px + k12 * py);
-            float dvy = Math.abs(k12 * px + k22 * py);
-            change = Math.max(change, Math.max(dvx, dvy));
+            if (!useBias) {
+                // The change of the anchors' relative velocity is K times the impulse.
+                float jx = accX - warmX;
+                float jy = accY - warmY;
+                change = Math.max(change, Math.max(Math.abs(k11 * jx + k12 * jy), Math.abs(k12 * jx + k22 * jy)));
+            }
         }
         return change;
     }

@@ -46,6 +46,10 @@ public final class Motor implements Constraint {
     private float accX;
     private float accY;
     private float accAngular;
+    // The impulses this substep warm-started with: the relax pass reports the change from them.
+    private float warmX;
+    private float warmY;
+    private float warmAngular;
     // All impulses applied in the tick, in world axes.
     private float tickX;
     private float tickY;
@@ -257,6 +261,9 @@ public final class Motor implements Constraint {
             accAngular *= scale;
         }
         impulseSubstep = h;
+        warmX = accX;
+        warmY = accY;
+        warmAngular = accAngular;
         // Count every impulse applied in the tick: substeps after convergence only warm start.
         if (rotational) {
             step.applyAngularImpulse(index, accAngular);
@@ -283,7 +290,7 @@ public final class Motor implements Constraint {
             float d = accAngular - old;
             step.applyAngularImpulse(index, d);
             tickAngular += d;
-            change = Math.abs(d / inertia) * radius;
+            change = useBias ? 0f : Math.abs((accAngular - warmAngular) / inertia) * radius;
         } else {
             if (mass == 0f || (speed == 0f && !orthogonal)) {
                 return 0f;
@@ -312,7 +319,7 @@ public final class Motor implements Constraint {
                 dy = d * dirY;
             }
             applyLocal(step, dx, dy);
-            change = Math.max(Math.abs(dx), Math.abs(dy)) / mass;
+            change = useBias ? 0f : Math.max(Math.abs(accX - warmX), Math.abs(accY - warmY)) / mass;
         }
         return change;
     }

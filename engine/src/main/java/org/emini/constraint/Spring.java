@@ -41,6 +41,9 @@ public final class Spring extends TwoBodyConstraint {
     private boolean active;
     // Impulse of the current substep's solve along the anchor line (positive pushes B away from A).
     private float acc;
+    // The impulse this substep warm-started with, and the inverse effective mass of its last solve.
+    private float warm;
+    private float lastK;
     // The second half of the last substep's centred spring impulse, applied when the next begins.
     private float pending;
     // Fraction of the substep the biased pass solved the spring over (1/2 centred, 1 implicit).
@@ -210,6 +213,8 @@ public final class Spring extends TwoBodyConstraint {
             return;
         }
         acc *= substepScale(step);
+        warm = acc;
+        lastK = 0f;
         float impulse = acc + pending;
         // Unless a solve this substep says otherwise, the spring keeps its last substep's impulse
         // (substeps after dynamic iterations converged only warm start).
@@ -231,9 +236,12 @@ public final class Spring extends TwoBodyConstraint {
     @Override
     public float solve(SolverStep step, boolean useBias) {
         boolean rigid = isRigid();
-        // A spring with a coefficient is solved for the whole substep in the biased pass.
-        if (!active || !(rigid || useBias)) {
+        if (!active) {
             return 0f;
+        }
+        if (!rigid && !useBias) {
+            // A spring with a coefficient is solved for the whole substep in the biased pass.
+            return Math.abs((acc - warm) * lastK);
         }
         arms(step);
         float len = EMath.sqrt(sepX * sepX + sepY * sepY);
@@ -249,6 +257,7 @@ public final class Spring extends TwoBodyConstraint {
         if (k <= 0f) {
             return 0f;
         }
+        lastK = k;
         float impulse;
         if (rigid) {
             float cdot = relativeVelocityX(step) * ux + relativeVelocityY(step) * uy;
@@ -268,7 +277,7 @@ public final class Spring extends TwoBodyConstraint {
             counted = acc / theta;
         }
         applyLinear(step, impulse * ux, impulse * uy);
-        return Math.abs(impulse * k);
+        return useBias ? 0f : Math.abs((acc - warm) * k);
     }
 
     /**

@@ -11,9 +11,8 @@ package org.emini.dynamics;
  * not allocate in these calls.
  *
  * <p>Accumulated impulses are impulses per substep. When {@link SolverStep#getSubstep()} differs
- * from the substep an impulse was accumulated over (the timestep or iteration count changed, or
- * dynamic iterations merged the rest of a tick into one step), scale it by the ratio before warm
- * starting with it.
+ * from the substep an impulse was accumulated over (the timestep or iteration count changed),
+ * scale it by the ratio before warm starting with it.
  */
 public interface Constraint {
     /**
@@ -43,8 +42,12 @@ public interface Constraint {
      *
      * @param step the tick's solver state
      * @param useBias true for the pass that corrects position error, false for the relax pass
-     * @return the largest change of relative velocity this pass made (px/s, or rad/s times a
-     *     length), used by dynamic iterations to decide convergence; return 0 when converged
+     * @return for the relax pass ({@code useBias} false): how far the substep's impulse now differs
+     *     from the one it was warm-started with, as relative velocity (px/s, or rad/s times a length).
+     *     Dynamic iterations stop solving once this is below the tolerance for every constraint and
+     *     contact, and repeat the warm start alone in the remaining substeps, so a constraint that
+     *     reports less than its real change is launched by its own impulse. The biased pass's
+     *     value is not used.
      */
     float solve(SolverStep step, boolean useBias);
 

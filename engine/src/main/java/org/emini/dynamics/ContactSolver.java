@@ -67,8 +67,16 @@ final class ContactSolver {
     private Contact[] contacts = new Contact[16];
     private int count;
 
-    /** Largest velocity change a relax pass made (px/s); the dynamic-iteration convergence test. */
-    float lastRelaxChange;
+    /**
+     * Dynamic iterations' convergence measure, set by a tracked relax pass: the largest change of a
+     * point's relative velocity (px/s) that the substep's impulses made beyond its warm start, or
+     * infinity when a speculative point may close before the tick ends. Below the tolerance, later
+     * substeps may repeat the warm start alone.
+     */
+    float lastChange;
+
+    // Dynamic iterations only: each point's normal and tangent impulse as warm-started this substep.
+    private float[] warm = new float[0];
 
     // Per solver body: the relax pass that last changed its velocity by more than the hot tolerance.
     private int[] hot = new int[16];
@@ -221,8 +229,11 @@ final class ContactSolver {
     }
 
     /** Re-applies the accumulated impulses, so a resting stack starts each substep nearly solved. */
-    void warmStart(SolverBodies bodies) {
+    void warmStart(SolverBodies bodies, boolean record) {
         float[] st = bodies.state;
+        if (record) {
+            recordWarmStart();
+        }
         for (int k = 0; k < count; k++) {
             int fo = k * CS;
             int io = k * CI;
@@ -284,11 +295,9 @@ final class ContactSolver {
      * @param invH 1 / substep length
      * @param maxPush cap on the push-out speed (px/s)
      * @param slop penetration left alone so resting contacts do not jitter (px)
-     * @param trackChange measure the largest velocity change into {@link #lastRelaxChange} (only the
-     *     dynamic-iteration test reads it; the division per point it costs is skipped otherwise)
      */
-    void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop, boolean trackChange) {
-        solve(bodies, useBias, invH, maxPush, slop, trackChange, false, Float.POSITIVE_INFINITY);
+    void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop) {
+        solve(bodies, useBias, invH, maxPush, slop, -1f, 0f, 0f, false, Float.POSITIVE_INFINITY);
     }
 
     /**
@@ -303,7 +312,7 @@ final class ContactSolver {
     int relaxHot(SolverBodies bodies, float invH, float maxPush, float slop, float tolerance, int maxPasses) {
         int made = 0;
         while (made < maxPasses && anyHot) {
-            solve(bodies, false, invH, maxPush, slop, false, true, tolerance);
+            solve(bodies, false, invH, maxPush, slop, -1f, 0f, 0f, true, tolerance);
             made++;
         }
         return made;
@@ -311,14 +320,21 @@ final class ContactSolver {
 
     /**
      * Starts a substep's first relax pass, marking the bodies it changes by more than
-     * {@code tolerance} for {@link #relaxHot}.
+     * {@code tolerance} for {@link #relax}. With a horizon &ge; 0 (dynamic iterations; the
+     * warm start must have been recorded), it also measures {@link #lastChange}.
+     *
+     * @param horizon the time left in the tick after this substep (s), or negative not to measure
+     * @param gravityX gravity (px/s²), which may close a gap to a static body in that time
+     * @param gravityY gravity (px/s²)
      */
-    void relax(SolverBodies bodies, float invH, float maxPush, float slop, boolean trackChange, float tolerance) {
-        solve(bodies, false, invH, maxPush, slop, trackChange, false, tolerance);
+    void relax(SolverBodies bodies, float invH, float maxPush, float slop, float tolerance, float horizon,
+            float gravityX, float gravityY) {
+        solve(bodies, false, invH, maxPush, slop, horizon, gravityX, gravityY, false, tolerance);
     }
 
-    private void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop, boolean trackChange,
-            boolean hotOnly, float hotTolerance) {
+    private void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop, float horizon,
+            float gravityX, float gravityY, boolean hotOnly, float hotTolerance) {
+        boolean trackChange = horizon >= 0f;
         float[] st = bodies.state;
         float maxChange = 0f;
         int[] hotStamp = hot;
@@ -413,11 +429,6 @@ final class ContactSolver {
                         if (d2 > f[p2 + MAXIMP]) {
                             f[p2 + MAXIMP] = d2;
                         }
-                        if (trackChange) {
-                            float dv1 = (d1 < 0f ? -d1 : d1) / f[p1 + NMASS];
-                            float dv2 = (d2 < 0f ? -d2 : d2) / f[p2 + NMASS];
-                            maxChange = Math.max(maxChange, Math.max(dv1, dv2));
-                        }
                         float px = (d1 + d2) * nx;
                         float py = (d1 + d2) * ny;
                         if (!useBias) {
@@ -470,13 +481,6 @@ final class ContactSolver {
                 if (d > f[po + MAXIMP]) {
                     f[po + MAXIMP] = d;
                 }
-                if (trackChange && nm > 0f) {
-                    float dv = d / nm;
-                    dv = dv < 0f ? -dv : dv;
-                    if (dv > maxChange) {
-                        maxChange = dv;
-                    }
-                }
                 if (!useBias) {
                     markHot(ia, ib, (d < 0f ? -d : d) * f[po + KN], hotTolerance, current);
                 }
@@ -516,6 +520,35 @@ final class ContactSolver {
                 wb += iB * (rbx * py - rby * px);
             }
 
+            if (trackChange) {
+                for (int p = 0; p < pc; p++) {
+                    int po = fo + P0 + p * PS;
+                    float rax = f[po + RAX];
+                    float ray = f[po + RAY];
+                    float rbx = f[po + RBX];
+                    float rby = f[po + RBY];
+                    float dn = f[po + NIMP] - warm[4 * k + 2 * p];
+                    float dt = f[po + TIMP] - warm[4 * k + 2 * p + 1];
+                    float tm = f[po + TMASS];
+                    float dv = Math.max((dn < 0f ? -dn : dn) * f[po + KN], tm > 0f ? (dt < 0f ? -dt : dt) / tm : 0f);
+                    float sep = (dpx + qbc * rbx - qbs * rby - qac * rax + qas * ray) * nx
+                        + (dpy + qbs * rbx + qbc * rby - qas * rax - qac * ray) * ny + f[po + BASE_SEP];
+                    if (sep > 0f) {
+                        // A gap that could close before the tick ends needs the solve: warm starts alone
+                        // would let the bodies pass into each other. Gravity closes only gaps to static
+                        // bodies (slot 0), at its component along the normal.
+                        float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
+                        float an = oa == 0 ? gravityX * nx + gravityY * ny : (ob == 0 ? -gravityX * nx - gravityY * ny : 0f);
+                        float reach = ((vn < 0f ? vn : 0f) + (an < 0f ? an : 0f) * horizon) * horizon;
+                        if (sep + reach <= 0f) {
+                            dv = Float.POSITIVE_INFINITY;
+                        }
+                    }
+                    if (dv > maxChange) {
+                        maxChange = dv;
+                    }
+                }
+            }
             if (oa != 0) {
                 st[oa + VX] = vax;
                 st[oa + VY] = vay;
@@ -527,8 +560,24 @@ final class ContactSolver {
                 st[ob + W] = wb;
             }
         }
-        if (!useBias) {
-            lastRelaxChange = maxChange;
+        if (trackChange) {
+            lastChange = maxChange;
+        }
+    }
+
+    /** Keeps each point's warm-start impulses, from which {@link #lastChange} is measured. */
+    private void recordWarmStart() {
+        if (warm.length < 4 * count) {
+            warm = new float[4 * contacts.length];
+        }
+        for (int k = 0; k < count; k++) {
+            int fo = k * CS;
+            int pc = n[k * CI + POINTS];
+            for (int p = 0; p < pc; p++) {
+                int po = fo + P0 + p * PS;
+                warm[4 * k + 2 * p] = f[po + NIMP];
+                warm[4 * k + 2 * p + 1] = f[po + TIMP];
+            }
         }
     }
 

@@ -896,33 +896,32 @@ public final class World {
         float impactTolerance = settings.getImpactTolerance();
         int impactPasses = settings.getImpactRelaxPasses();
         int used = 0;
-        float hh = h;
-        float change = Float.MAX_VALUE;
+        float invH = 1f / h;
         boolean converged = false;
         for (int i = 0; i < n; i++) {
-            float invH = 1f / hh;
-            sb.integrateVelocities(hh);
+            sb.integrateVelocities(h);
             for (int c = 0; c < cn; c++) {
                 cs[c].warmStart(step);
             }
-            contactSolver.warmStart(sb);
+            contactSolver.warmStart(sb, dynamicIterations && !converged);
+            // Once converged, every later substep repeats the warm start alone: valid only while
+            // the impulses of a substep equal those it started from, which is what converged means.
             if (!converged) {
                 for (int c = 0; c < cn; c++) {
                     cs[c].solve(step, true);
                 }
-                contactSolver.solve(sb, true, invH, maxPush, slop, false);
+                contactSolver.solve(sb, true, invH, maxPush, slop);
             }
-            sb.integratePositions(hh);
+            sb.integratePositions(h);
             if (!converged) {
-                change = 0f;
+                float change = 0f;
                 for (int c = 0; c < cn; c++) {
                     change = Math.max(change, cs[c].solve(step, false));
                 }
-                contactSolver.relax(sb, invH, maxPush, slop, dynamicIterations, impactTolerance);
-                contactSolver.relaxHot(sb, invH, maxPush, slop, impactTolerance, impactPasses);
-                change = Math.max(change, contactSolver.lastRelaxChange);
+                contactSolver.relax(sb, invH, maxPush, slop, impactTolerance, dynamicIterations ? (n - 1 - i) * h : -1f, gravityX, gravityY);
+                int hotPasses = contactSolver.relaxHot(sb, invH, maxPush, slop, impactTolerance, impactPasses);
                 used++;
-                converged = dynamicIterations && change < tolerance;
+                converged = dynamicIterations && hotPasses == 0 && Math.max(change, contactSolver.lastChange) < tolerance;
             }
         }
         contactSolver.applyRestitution(sb, settings.getRestitutionThreshold());
@@ -931,7 +930,7 @@ public final class World {
             cs[c].finish(step);
         }
         continuous.solve(sb, broadPhase, 4f * slop + 0.05f);
-        lastSubstep = hh;
+        lastSubstep = h;
         lastIterationCount = used;
         Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);
         if (bad != null) {
