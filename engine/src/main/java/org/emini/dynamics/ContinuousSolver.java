@@ -53,7 +53,14 @@ final class ContinuousSolver implements QueryCallback {
         return sweeps;
     }
 
-    void solve(SolverBodies sb, BroadPhase broadPhase, float target) {
+    /**
+     * Moves each fast body back to its first time of impact with a static body (a bullet: any body)
+     * or the landscape.
+     *
+     * @return null, or the first body whose new state is not finite or whose swept box overflows
+     *     (nothing can be swept for it; the tick stops with an error naming it)
+     */
+    Body solve(SolverBodies sb, BroadPhase broadPhase, float target) {
         sweeps = 0;
         this.target = target;
         float[] st = sb.state;
@@ -65,6 +72,9 @@ final class ContinuousSolver implements QueryCallback {
             float dy = st[o + DPY];
             float da = st[o + ANGLE] - b.angle;
             float travel = Math.abs(dx) + Math.abs(dy) + Math.abs(da) * shape.getBoundingRadius();
+            if (!EMath.isFinite(travel + st[o + X] + st[o + Y] + st[o + VX] + st[o + VY] + st[o + W])) {
+                return escaped(b);
+            }
             if (travel <= 2f * TimeOfImpact.coreRadius(shape)) {
                 continue;
             }
@@ -83,6 +93,10 @@ final class ContinuousSolver implements QueryCallback {
             float minY = Math.min(box[1], box2[1]);
             float maxX = Math.max(box[2], box2[2]);
             float maxY = Math.max(box[3], box2[3]);
+            if (!EMath.isFinite(minX + minY + maxX + maxY)) {
+                // Finite poses whose swept box overflows: no query can place it.
+                return escaped(b);
+            }
             // Only bullets sweep against dynamic bodies; the others search the static tree alone.
             if (b.isBullet()) {
                 broadPhase.query(minX, minY, maxX, maxY, this);
@@ -101,6 +115,13 @@ final class ContinuousSolver implements QueryCallback {
         }
         moving = null;
         state = null;
+        return null;
+    }
+
+    private Body escaped(Body b) {
+        moving = null;
+        state = null;
+        return b;
     }
 
     @Override

@@ -146,6 +146,13 @@ final class SolverBodies {
      * Copies the state back to the bodies, applies the world's per-tick damping and clears the
      * forces. Returns the first body that became non-finite, or null.
      */
+    /** A body's state in this tick's solve, for error messages. */
+    String describe(Body b) {
+        int o = b.solverIndex * STRIDE;
+        return "position (" + state[o + X] + ", " + state[o + Y] + "), angle " + state[o + ANGLE] + ", velocity ("
+            + state[o + VX] + ", " + state[o + VY] + "), angular velocity " + state[o + W];
+    }
+
     Body writeBack(float linearKeep, float angularKeep) {
         float[] st = state;
         Body bad = null;

@@ -812,6 +812,11 @@ public final class World {
     /**
      * Advances the world by one timestep: external forces, collision detection, the solve (constraints
      * and contacts), then, when a listener is set, the events.
+     *
+     * @throws IllegalStateException "World.tick: Body#id left the range of finite numbers in tick n
+     *     (its state)" when extreme velocities, forces, gravity or a timestep carry a body's state past
+     *     what a float holds; the bodies keep their last finite poses when the overflow is found before
+     *     they are written back
      */
     public void tick() {
         float dt = timestep;
@@ -929,14 +934,22 @@ public final class World {
         for (int c = 0; c < cn; c++) {
             cs[c].finish(step);
         }
-        continuous.solve(sb, broadPhase, 4f * slop + 0.05f);
+        Body escaped = continuous.solve(sb, broadPhase, 4f * slop + 0.05f);
+        if (escaped != null) {
+            // Thrown before the write-back: the bodies keep their last finite poses.
+            throw leftFiniteRange(escaped);
+        }
         lastSubstep = h;
         lastIterationCount = used;
         Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);
         if (bad != null) {
-            throw new IllegalStateException("World.tick: " + bad + " became non-finite in tick " + tickCount
-                + "; check the forces and settings applied to it");
+            throw leftFiniteRange(bad);
         }
+    }
+
+    private IllegalStateException leftFiniteRange(Body b) {
+        return new IllegalStateException("World.tick: Body#" + b.getId() + " left the range of finite numbers in tick "
+            + tickCount + " (" + solverBodies.describe(b) + "); check the forces, velocities, gravity and timestep applied to it");
     }
 
     private void setSoftness(float h) {

@@ -172,12 +172,18 @@ public abstract class Shape {
      * Sets the mass; the inertia follows (uniform density over the area).
      *
      * @param mass the mass, finite and &gt; 0 (a ratio: only mass ratios matter)
-     * @throws IllegalArgumentException if the mass is not finite or not positive
+     * @throws IllegalArgumentException if the mass is not finite or not positive, or so small or
+     *     large that the mass, inertia or their inverses overflow a float
      */
     public void setMass(float mass) {
         if (!(EMath.isFinite(mass) && mass > 0f)) {
             throw new IllegalArgumentException(
                     "Shape.setMass: mass must be finite and > 0, got " + mass);
+        }
+        float inertia = mass * unitInertia;
+        if (!(EMath.isFinite(1f / mass) && inertia > 0f && EMath.isFinite(inertia) && EMath.isFinite(1f / inertia))) {
+            throw new IllegalArgumentException("Shape.setMass: mass " + mass + " gives this shape an inertia of "
+                    + inertia + ", whose inverse a float cannot hold; choose a mass nearer 1 (only ratios matter)");
         }
         applyMass(mass);
     }

@@ -36,6 +36,8 @@ class BadInputTest {
         assertThrows(IllegalArgumentException.class, () -> shape.setMass(Float.NaN));
         assertThrows(IllegalArgumentException.class, () -> shape.setMass(0f));
         assertThrows(IllegalArgumentException.class, () -> shape.setMass(Float.POSITIVE_INFINITY));
+        refused("Shape.setMass: mass 1.4E-45", () -> shape.setMass(Float.MIN_VALUE));
+        refused("Shape.setMass: mass 3.0E38", () -> shape.setMass(3e38f));
         assertThrows(IllegalArgumentException.class, () -> shape.setFriction(1.5f));
         assertThrows(IllegalArgumentException.class, () -> shape.setElasticity(Float.NaN));
     }
