@@ -6,6 +6,9 @@ import static org.emini.dynamics.SolverBodies.DPX;
 import static org.emini.dynamics.SolverBodies.DPY;
 import static org.emini.dynamics.SolverBodies.S;
 import static org.emini.dynamics.SolverBodies.STRIDE;
+import static org.emini.dynamics.SolverBodies.VX;
+import static org.emini.dynamics.SolverBodies.VY;
+import static org.emini.dynamics.SolverBodies.W;
 import static org.emini.dynamics.SolverBodies.X;
 import static org.emini.dynamics.SolverBodies.Y;
 
