@@ -164,7 +164,9 @@ public final class Joint extends TwoBodyConstraint {
         if (axialMass != 0f) {
             float bias = 0f;
             if (useBias) {
+                float maxTurn = radius > 0f ? step.getJointPushMaxVelocity() / radius : Float.POSITIVE_INFINITY;
                 bias = biasRate * angleError(step);
+                bias = bias < -maxTurn ? -maxTurn : (bias > maxTurn ? maxTurn : bias);
             }
             float cdot = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
             float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accAngle;
@@ -179,8 +181,17 @@ public final class Joint extends TwoBodyConstraint {
         float cx = relativeVelocityX(step);
         float cy = relativeVelocityY(step);
         if (useBias) {
-            cx += biasRate * sepX;
-            cy += biasRate * sepY;
+            float bx = biasRate * sepX;
+            float by = biasRate * sepY;
+            float max = step.getJointPushMaxVelocity();
+            float b2 = bx * bx + by * by;
+            if (b2 > max * max) {
+                float scale = max / EMath.sqrt(b2);
+                bx *= scale;
+                by *= scale;
+            }
+            cx += bx;
+            cy += by;
         }
         // K = J M⁻¹ Jᵀ for the point constraint.
         float m = mA + mB;

@@ -261,7 +261,12 @@ public final class Spring extends TwoBodyConstraint {
         float impulse;
         if (rigid) {
             float cdot = relativeVelocityX(step) * ux + relativeVelocityY(step) * uy;
-            float bias = useBias ? step.getJointBiasRate() * (len - restLength) : 0f;
+            float bias = 0f;
+            if (useBias) {
+                float max = step.getJointPushMaxVelocity();
+                bias = step.getJointBiasRate() * (len - restLength);
+                bias = bias < -max ? -max : (bias > max ? max : bias);
+            }
             float massScale = useBias ? step.getJointMassScale() : 1f;
             float impulseScale = useBias ? step.getJointImpulseScale() : 0f;
             impulse = -massScale * (cdot + bias) / k - impulseScale * acc;

@@ -15,6 +15,7 @@ public final class SolverSettings {
     private float contactHertz = 240f;
     private float contactDampingRatio = 10f;
     private float contactPushMaxVelocity = 60f;
+    private float jointPushMaxVelocity = 1000f;
     private float restitutionThreshold = 10f;
     private float convergenceTolerance = 0.02f;
     private float impactTolerance = 5f;
@@ -140,6 +141,28 @@ public final class SolverSettings {
      */
     public void setContactPushMaxVelocity(float pxPerSecond) {
         contactPushMaxVelocity = Check.positive("SolverSettings.setContactPushMaxVelocity", "pxPerSecond", pxPerSecond);
+    }
+
+    /**
+     * Largest speed at which a joint or rigid spring pulls its anchors together to correct an error.
+     * Default 1000 px/s: with the default joint softness (about 64/s at 20 ticks/s and 10
+     * iterations) errors up to about 15 px are corrected at the full soft rate, larger ones, such
+     * as a joint created far from satisfied, at this speed instead of an impulse that flings the
+     * bodies (the role of Box2D 2.4's maximum linear correction per step).
+     *
+     * @return the speed (px/s)
+     */
+    public float getJointPushMaxVelocity() {
+        return jointPushMaxVelocity;
+    }
+
+    /**
+     * Sets the joint correction speed cap.
+     *
+     * @param pxPerSecond the speed (px/s), &gt; 0
+     */
+    public void setJointPushMaxVelocity(float pxPerSecond) {
+        jointPushMaxVelocity = Check.positive("SolverSettings.setJointPushMaxVelocity", "pxPerSecond", pxPerSecond);
     }
 
     /**

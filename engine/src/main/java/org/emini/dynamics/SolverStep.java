@@ -15,14 +15,16 @@ public final class SolverStep {
     private float h;
     private float invH;
     private final Softness jointSoftness = new Softness();
+    private float jointPushMax;
 
     SolverStep(SolverBodies bodies, World world) {
         this.bodies = bodies;
         this.world = world;
     }
 
-    void begin(float dt, float h, float jointHertz, float jointDampingRatio) {
+    void begin(float dt, float h, float jointHertz, float jointDampingRatio, float jointPushMax) {
         this.dt = dt;
+        this.jointPushMax = jointPushMax;
         setSubstep(h, jointHertz, jointDampingRatio);
     }
 
@@ -250,6 +252,17 @@ public final class SolverStep {
     public float getPositionY(Body body) {
         int i = body.solverIndex;
         return i == 0 ? body.y : bodies.state[i * SolverBodies.STRIDE + SolverBodies.Y];
+    }
+
+    /**
+     * The fastest a joint's position correction may move its anchors toward each other
+     * ({@link SolverSettings#getJointPushMaxVelocity()}): constraints clamp their bias velocity
+     * (bias rate times error) to it, angular ones to it divided by their bodies' radius.
+     *
+     * @return the speed (px/s)
+     */
+    public float getJointPushMaxVelocity() {
+        return jointPushMax;
     }
 
     /**

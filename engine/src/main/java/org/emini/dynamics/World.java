@@ -884,7 +884,7 @@ public final class World {
         setSoftness(h);
         float jointHertz = settings.getJointHertz();
         float jointDamping = settings.getJointDampingRatio();
-        step.begin(dt, h, jointHertz, jointDamping);
+        step.begin(dt, h, jointHertz, jointDamping, settings.getJointPushMaxVelocity());
         contactSolver.prepare(contacts.active, contacts.activeCount, sb, soft, staticSoft);
         // Stored impulses belong to the substep they were computed for.
         if (lastSubstep != 0f && lastSubstep != h) {
