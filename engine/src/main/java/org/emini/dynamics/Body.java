@@ -132,7 +132,11 @@ public final class Body {
      * @param shape the new shape
      */
     public void setShape(Shape shape) {
-        this.shape = Check.notNull("Body.setShape", "shape", shape);
+        Check.notNull("Body.setShape", "shape", shape);
+        if (world != null) {
+            world.checkNotSolving("Body.setShape");
+        }
+        this.shape = shape;
         if (world != null) {
             world.bodyShapeChanged(this);
         }
@@ -163,8 +167,13 @@ public final class Body {
      * @param y the new y (px)
      */
     public void setPosition(float x, float y) {
-        this.x = Check.finite("Body.setPosition", "x", x);
-        this.y = Check.finite("Body.setPosition", "y", y);
+        Check.finite("Body.setPosition", "x", x);
+        Check.finite("Body.setPosition", "y", y);
+        if (world != null) {
+            world.checkNotSolving("Body.setPosition");
+        }
+        this.x = x;
+        this.y = y;
         if (world != null) {
             world.bodyGeometryChanged(this);
         }
@@ -213,7 +222,11 @@ public final class Body {
      * @param radians the angle in radians
      */
     public void setAngle(float radians) {
-        angle = Check.finite("Body.setAngle", "radians", radians);
+        Check.finite("Body.setAngle", "radians", radians);
+        if (world != null) {
+            world.checkNotSolving("Body.setAngle");
+        }
+        angle = radians;
         c = EMath.cos(radians);
         s = EMath.sin(radians);
         if (world != null) {
@@ -260,6 +273,9 @@ public final class Body {
         if (dynamic) {
             this.vx = vx;
             this.vy = vy;
+            if (world != null) {
+                world.bodyVelocitySet(this);
+            }
         }
     }
 
@@ -281,6 +297,9 @@ public final class Body {
         Check.finite("Body.setAngularVelocity", "omega", omega);
         if (dynamic && rotatable) {
             w = omega;
+            if (world != null) {
+                world.bodyVelocitySet(this);
+            }
         }
     }
 
@@ -417,6 +436,9 @@ public final class Body {
      * @param dynamic true for dynamic
      */
     public void setDynamic(boolean dynamic) {
+        if (world != null) {
+            world.checkNotSolving("Body.setDynamic");
+        }
         this.dynamic = dynamic;
         if (!dynamic) {
             vx = 0f;
@@ -446,6 +468,10 @@ public final class Body {
         this.rotatable = rotatable;
         if (!rotatable) {
             w = 0f;
+        }
+        if (world != null) {
+            world.bodyForcesChanged(this);
+            world.bodyVelocitySet(this);
         }
     }
 
@@ -486,6 +512,9 @@ public final class Body {
      */
     public void setGravityAffected(boolean affected) {
         this.gravityAffected = affected;
+        if (world != null) {
+            world.bodyForcesChanged(this);
+        }
     }
 
     /**
@@ -567,6 +596,9 @@ public final class Body {
         forcesForThisTick();
         forceX += fx;
         forceY += fy;
+        if (world != null) {
+            world.bodyForcesChanged(this);
+        }
     }
 
     /** Drops forces left from a tick that did not simulate this body. */
@@ -593,6 +625,9 @@ public final class Body {
         Check.finite("Body.applyForceAt", "px", px);
         Check.finite("Body.applyForceAt", "py", py);
         torque += (px - x) * fy - (py - y) * fx;
+        if (world != null) {
+            world.bodyForcesChanged(this);
+        }
     }
 
     /**
@@ -609,6 +644,9 @@ public final class Body {
             float m = shape.getMass();
             forceX += m * ax;
             forceY += m * ay;
+            if (world != null) {
+                world.bodyForcesChanged(this);
+            }
         }
     }
 
@@ -621,6 +659,9 @@ public final class Body {
         Check.finite("Body.applyTorque", "torque", t);
         forcesForThisTick();
         torque += t;
+        if (world != null) {
+            world.bodyForcesChanged(this);
+        }
     }
 
     /**
@@ -637,6 +678,9 @@ public final class Body {
             float im = shape.getInverseMass();
             vx += im * jx;
             vy += im * jy;
+            if (world != null) {
+                world.bodyImpulseApplied(this, im * jx, im * jy, 0f);
+            }
         }
     }
 
@@ -653,7 +697,11 @@ public final class Body {
         Check.finite("Body.applyImpulseAt", "py", py);
         applyImpulse(jx, jy);
         if (dynamic && rotatable) {
-            w += shape.getInverseInertia() * ((px - x) * jy - (py - y) * jx);
+            float dw = shape.getInverseInertia() * ((px - x) * jy - (py - y) * jx);
+            w += dw;
+            if (world != null) {
+                world.bodyImpulseApplied(this, 0f, 0f, dw);
+            }
         }
     }
 
@@ -665,7 +713,11 @@ public final class Body {
     public void applyAngularImpulse(float impulse) {
         Check.finite("Body.applyAngularImpulse", "impulse", impulse);
         if (dynamic && rotatable) {
-            w += shape.getInverseInertia() * impulse;
+            float dw = shape.getInverseInertia() * impulse;
+            w += dw;
+            if (world != null) {
+                world.bodyImpulseApplied(this, 0f, 0f, dw);
+            }
         }
     }
 

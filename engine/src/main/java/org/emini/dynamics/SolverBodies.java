@@ -64,13 +64,7 @@ final class SolverBodies {
         bodies[slot] = b;
         float[] st = state;
         int o = slot * STRIDE;
-        float im = b.getInverseMass();
-        float ii = b.getInverseInertia();
-        st[o + VX] = b.vx;
-        st[o + VY] = b.vy;
-        st[o + W] = b.w;
-        st[o + IM] = im;
-        st[o + II] = ii;
+        copyMotion(b, slot, gravityX, gravityY, tick);
         st[o + DPX] = 0f;
         st[o + DPY] = 0f;
         st[o + DQC] = 1f;
@@ -80,13 +74,56 @@ final class SolverBodies {
         st[o + C] = b.c;
         st[o + S] = b.s;
         st[o + ANGLE] = b.angle;
+        return slot;
+    }
+
+    /**
+     * Copies a body's mass and forces again, when the application changed them during the solve
+     * (from a constraint's prepare, as the manual's jump does).
+     */
+    void refreshForces(Body b, float gravityX, float gravityY, long tick) {
+        int o = b.solverIndex * STRIDE;
+        float vx = state[o + VX];
+        float vy = state[o + VY];
+        float w = state[o + W];
+        copyMotion(b, b.solverIndex, gravityX, gravityY, tick);
+        state[o + VX] = vx;
+        state[o + VY] = vy;
+        state[o + W] = w;
+    }
+
+    /** Sets a body's velocity in the solve, when the application set it during the solve. */
+    void setVelocity(Body b, float vx, float vy, float w) {
+        int o = b.solverIndex * STRIDE;
+        state[o + VX] = vx;
+        state[o + VY] = vy;
+        state[o + W] = w;
+    }
+
+    /** Adds to a body's velocity in the solve, when the application applied an impulse during the solve. */
+    void addVelocity(Body b, float dvx, float dvy, float dw) {
+        int o = b.solverIndex * STRIDE;
+        state[o + VX] += dvx;
+        state[o + VY] += dvy;
+        state[o + W] += dw;
+    }
+
+    private void copyMotion(Body b, int slot, float gravityX, float gravityY, long tick) {
+        float[] st = state;
+        int o = slot * STRIDE;
+        float im = b.getInverseMass();
+        float ii = b.getInverseInertia();
+        st[o + VX] = b.vx;
+        st[o + VY] = b.vy;
+        st[o + W] = b.w;
+        st[o + IM] = im;
+        st[o + II] = ii;
         float g = b.isAffectedByGravity() ? 1f : 0f;
         // Forces left from a tick that did not simulate the body (it was frozen) do not count.
         float f = b.forceTick == tick ? 1f : 0f;
         st[o + AX] = g * gravityX + f * im * b.forceX;
         st[o + AY] = g * gravityY + f * im * b.forceY;
         alpha[slot] = f * ii * b.torque;
-        return slot;
     }
 
     /** v ← v + h·a for every moving body (symplectic Euler, first half). */

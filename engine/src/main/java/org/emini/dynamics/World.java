@@ -11,7 +11,7 @@ import org.emini.particle.ParticleSystem;
  * The simulated world: bodies, gravity, the solver's settings, and {@link #tick()}.
  *
  * <p>Defaults are the original engine's: 20 ticks per second, 10 iterations, gravity (0, 100) px/s²
- * pointing down the screen, no damping. Change bodies and settings only between ticks.
+ * pointing down the screen, no damping.
  *
  * <p>One tick: find the bodies to simulate (all dynamic bodies, or those inside the
  * {@linkplain #setSimulationArea(float, float, float, float) simulation area}); update the
@@ -19,9 +19,20 @@ import org.emini.particle.ParticleSystem;
  * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver splits the tick into substeps, one per
  * iteration: each substep integrates velocities, warm-starts, makes one soft (position-correcting)
  * pass over the contacts, integrates positions and makes one rigid relax pass. A restitution pass
- * ends the tick. In dynamic-iteration mode the solver stops solving once a relax pass changes no
- * velocity by more than {@link SolverSettings#getConvergenceTolerance()}: the remaining substeps
- * only integrate, re-applying the converged impulses (warm start) so resting stacks stay put.
+ * ends the tick. In dynamic-iteration mode the solver stops solving once a substep's impulses
+ * differ from those it started with by no more than {@link SolverSettings#getConvergenceTolerance()}
+ * (as velocity) and no speculative gap can close before the tick ends: the remaining substeps only
+ * integrate, re-applying the converged impulses (warm start) so resting stacks stay put.
+ *
+ * <p>Changing the world while it ticks (from an {@link ExternalForce}, a {@link Constraint} or an
+ * event listener): adding and removing bodies, constraints, forces, events and emitters, and
+ * replacing the landscape, are applied in the order made when the tick ends, so the lists stay as
+ * they were while the tick walks them ({@code remove...} answers whether the element will be gone).
+ * {@link #tick()} is not re-entrant. While the solver holds its copies of the bodies (a constraint's
+ * callbacks), velocities, impulses and forces set on a body reach the copy and act in this tick, as
+ * the manual's jump in a motor's prepare does; changing a body's pose, shape or kind there is
+ * refused with an {@link IllegalStateException}, and a body's getters give its state as the tick
+ * began (read the current one through the {@link SolverStep}).
  *
  * <p>A tick allocates nothing once the world's arrays have grown to the scene, and the same world
  * with the same inputs gives bit-identical results.
@@ -30,6 +41,10 @@ public final class World {
     private float timestep = 1f / 20f;
     private int iterations = 10;
     private boolean dynamicIterations;
+    // Inside tick(): structural changes wait in pending. Inside the solve: the solver holds body copies.
+    private boolean ticking;
+    private boolean solving;
+    private final PendingChanges pending = new PendingChanges();
     private float gravityX;
     private float gravityY = 100f;
     private float dampingLateral;
@@ -231,14 +246,20 @@ public final class World {
     // Bodies
 
     /**
-     * Adds a body. A body belongs to one world at a time.
+     * Adds a body. A body belongs to one world at a time. During a tick (from an external force, a
+     * constraint or an event listener) the body is added when the tick ends, as are all structural
+     * changes made then.
      *
      * @param body the body
      */
     public void addBody(Body body) {
         Check.notNull("World.addBody", "body", body);
-        if (body.world != null) {
+        if (body.world != null || (ticking && pending.willContain(PendingChanges.ADD_BODY, body, false))) {
             throw new IllegalArgumentException("World.addBody: " + body + " already belongs to a world");
+        }
+        if (ticking) {
+            pending.add(PendingChanges.ADD_BODY, body);
+            return;
         }
         int slot = freeSlotCount > 0 ? freeSlots[--freeSlotCount] : slotHigh++;
         if (slot == slots.length) {
@@ -268,12 +289,15 @@ public final class World {
 
     /**
      * Removes a body, its contacts and the constraints that act on it. Other bodies keep their
-     * order.
+     * order. During a tick the body is removed when the tick ends.
      *
      * @param body the body
-     * @return true when the body was in this world
+     * @return true when the body was in this world (during a tick: will be, when the tick ends)
      */
     public boolean removeBody(Body body) {
+        if (ticking) {
+            return body != null && queue(PendingChanges.ADD_BODY, body, body.world == this);
+        }
         if (body == null || body.world != this) {
             return false;
         }
@@ -361,7 +385,42 @@ public final class World {
         }
     }
 
+    /** Refuses a change of a body's pose, shape or kind while the solver holds a copy of it. */
+    void checkNotSolving(String where) {
+        if (solving) {
+            throw new IllegalStateException(where + ": cannot change a body's pose, shape or kind while the world solves"
+                + " a tick (from a Constraint); change it before tick(), or from an ExternalForce or an event listener");
+        }
+    }
+
+    // While the solver holds a copy of a body (from a Constraint), what the application changes of
+    // its velocity and forces reaches the copy; velocities otherwise read from the body are stale.
+
+    void bodyVelocitySet(Body b) {
+        if (solving && b.solverIndex != 0) {
+            solverBodies.setVelocity(b, b.vx, b.vy, b.w);
+        }
+    }
+
+    void bodyImpulseApplied(Body b, float dvx, float dvy, float dw) {
+        if (solving && b.solverIndex != 0) {
+            solverBodies.addVelocity(b, dvx, dvy, dw);
+        }
+    }
+
+    void bodyForcesChanged(Body b) {
+        if (solving && b.solverIndex != 0) {
+            solverBodies.refreshForces(b, gravityX, gravityY, tickCount);
+        }
+    }
+
     void bodyShapeChanged(Body b) {
+        if (ticking) {
+            // The tick's contacts still name the old shape's parts: drop them when it ends.
+            pending.add(PendingChanges.SHAPE_CHANGED, b);
+            bodyGeometryChanged(b);
+            return;
+        }
         // Contacts name the shape's parts: start afresh.
         contacts.destroyContactsOf(b);
         bodyGeometryChanged(b);
@@ -389,12 +448,18 @@ public final class World {
     }
 
     /**
-     * Replaces the world's landscape; contacts with the old one end at the next tick.
+     * Replaces the world's landscape; contacts with the old one end at the next tick. During a tick
+     * the landscape is replaced when the tick ends.
      *
      * @param landscape the landscape
      */
     public void setLandscape(Landscape landscape) {
-        this.landscape = Check.notNull("World.setLandscape", "landscape", landscape);
+        Check.notNull("World.setLandscape", "landscape", landscape);
+        if (ticking) {
+            pending.add(PendingChanges.SET_LANDSCAPE, landscape);
+            return;
+        }
+        this.landscape = landscape;
     }
 
     /**
@@ -506,10 +571,9 @@ public final class World {
      */
     public void addConstraint(Constraint constraint) {
         Check.notNull("World.addConstraint", "constraint", constraint);
-        for (int i = 0; i < constraintCount; i++) {
-            if (constraints[i] == constraint) {
-                throw new IllegalArgumentException("World.addConstraint: the constraint is already in this world");
-            }
+        if (added(PendingChanges.ADD_CONSTRAINT, constraint, indexOf(constraints, constraintCount, constraint) >= 0,
+                "World.addConstraint: the constraint is already in this world")) {
+            return;
         }
         if (constraintCount == constraints.length) {
             Constraint[] grown = new Constraint[constraintCount * 2];
@@ -526,6 +590,9 @@ public final class World {
      * @return true when it was in this world
      */
     public boolean removeConstraint(Constraint constraint) {
+        if (ticking) {
+            return queue(PendingChanges.ADD_CONSTRAINT, constraint, indexOf(constraints, constraintCount, constraint) >= 0);
+        }
         for (int i = 0; i < constraintCount; i++) {
             if (constraints[i] == constraint) {
                 System.arraycopy(constraints, i + 1, constraints, i, constraintCount - i - 1);
@@ -581,8 +648,9 @@ public final class World {
      */
     public void addExternalForce(ExternalForce force) {
         Check.notNull("World.addExternalForce", "force", force);
-        if (indexOf(forces, forceCount, force) >= 0) {
-            throw new IllegalArgumentException("World.addExternalForce: the force is already in this world");
+        if (added(PendingChanges.ADD_FORCE, force, indexOf(forces, forceCount, force) >= 0,
+                "World.addExternalForce: the force is already in this world")) {
+            return;
         }
         forces = grown(forces, forceCount);
         forces[forceCount++] = force;
@@ -596,6 +664,9 @@ public final class World {
      */
     public boolean removeExternalForce(ExternalForce force) {
         int i = indexOf(forces, forceCount, force);
+        if (ticking) {
+            return queue(PendingChanges.ADD_FORCE, force, i >= 0);
+        }
         if (i < 0) {
             return false;
         }
@@ -654,8 +725,9 @@ public final class World {
      */
     public void addEvent(Event event) {
         Check.notNull("World.addEvent", "event", event);
-        if (indexOf(events, eventCount, event) >= 0) {
-            throw new IllegalArgumentException("World.addEvent: the event is already in this world");
+        if (added(PendingChanges.ADD_EVENT, event, indexOf(events, eventCount, event) >= 0,
+                "World.addEvent: the event is already in this world")) {
+            return;
         }
         events = grown(events, eventCount);
         events[eventCount++] = event;
@@ -669,6 +741,9 @@ public final class World {
      */
     public boolean removeEvent(Event event) {
         int i = indexOf(events, eventCount, event);
+        if (ticking) {
+            return queue(PendingChanges.ADD_EVENT, event, i >= 0);
+        }
         if (i < 0) {
             return false;
         }
@@ -713,6 +788,31 @@ public final class World {
         return count < list.length ? list : java.util.Arrays.copyOf(list, count * 2);
     }
 
+    /**
+     * The add half of a structural change: refuses an item already there (or, during a tick, one
+     * that will be), and during a tick queues the add.
+     *
+     * @return true when the add was queued, false when it is to be made now
+     */
+    private boolean added(int addOp, Object item, boolean containedNow, String already) {
+        if (ticking ? pending.willContain(addOp, item, containedNow) : containedNow) {
+            throw new IllegalArgumentException(already);
+        }
+        if (ticking) {
+            pending.add(addOp, item);
+        }
+        return ticking;
+    }
+
+    /** The remove half during a tick: queues the removal of an item that will be there, and says whether it will. */
+    private boolean queue(int addOp, Object item, boolean containedNow) {
+        boolean there = item != null && pending.willContain(addOp, item, containedNow);
+        if (there) {
+            pending.add(addOp + 1, item);
+        }
+        return there;
+    }
+
     /** Removes an element keeping the order; returns the new count. */
     private static int removeAt(Object[] list, int count, int i) {
         System.arraycopy(list, i + 1, list, i, count - i - 1);
@@ -731,8 +831,13 @@ public final class World {
     public void addParticleEmitter(ParticleEmitter emitter) {
         Check.notNull("World.addParticleEmitter", "emitter", emitter);
         Body b = emitter.getBody();
-        if (b != null && b.world != this) {
+        boolean bodyHere = b == null || (ticking ? pending.willContain(PendingChanges.ADD_BODY, b, b.world == this) : b.world == this);
+        if (!bodyHere) {
             throw new IllegalArgumentException("World.addParticleEmitter: the emitter's body " + b + " is not in this world");
+        }
+        if (added(PendingChanges.ADD_EMITTER, emitter, ParticleSystem.isOwned(emitter),
+                "World.addParticleEmitter: " + emitter + " already belongs to a world")) {
+            return;
         }
         if (!particles.addEmitter(emitter)) {
             throw new IllegalArgumentException("World.addParticleEmitter: " + emitter + " already belongs to a world");
@@ -746,6 +851,9 @@ public final class World {
      * @return true when it was in this world
      */
     public boolean removeParticleEmitter(ParticleEmitter emitter) {
+        if (ticking) {
+            return queue(PendingChanges.ADD_EMITTER, emitter, particles.contains(emitter));
+        }
         return particles.removeEmitter(emitter);
     }
 
@@ -819,6 +927,21 @@ public final class World {
      *     they are written back
      */
     public void tick() {
+        if (ticking) {
+            throw new IllegalStateException("World.tick: called during a tick (from an external force, a constraint or"
+                + " an event listener); call it again after this one returns");
+        }
+        ticking = true;
+        try {
+            step();
+        } finally {
+            ticking = false;
+            solving = false;
+            pending.applyTo(this);
+        }
+    }
+
+    private void step() {
         float dt = timestep;
         for (int i = 0; i < forceCount; i++) {
             forces[i].applyForce(this, dt);
@@ -881,6 +1004,7 @@ public final class World {
             Body b = simulated[i];
             b.solverIndex = sb.add(b, gravityX, gravityY, tickCount);
         }
+        solving = true;
         setSoftness(h);
         float jointHertz = settings.getJointHertz();
         float jointDamping = settings.getJointDampingRatio();
@@ -942,6 +1066,7 @@ public final class World {
         lastSubstep = h;
         lastIterationCount = used;
         Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);
+        solving = false;
         if (bad != null) {
             throw leftFiniteRange(bad);
         }

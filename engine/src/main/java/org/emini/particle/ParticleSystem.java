@@ -34,6 +34,26 @@ public final class ParticleSystem {
     }
 
     /**
+     * Whether an emitter is in this system.
+     *
+     * @param emitter the emitter, or null
+     * @return true when it was added here and not removed
+     */
+    public boolean contains(ParticleEmitter emitter) {
+        return emitter != null && emitter.system == this;
+    }
+
+    /**
+     * Whether an emitter is in some system (some world).
+     *
+     * @param emitter the emitter
+     * @return true when it belongs to a system
+     */
+    public static boolean isOwned(ParticleEmitter emitter) {
+        return emitter.system != null;
+    }
+
+    /**
      * Adds an emitter. An emitter belongs to one particle system (one world) at a time.
      *
      * @param emitter the emitter
