@@ -80,6 +80,6 @@ class PinnedHashTest {
         assertTrue(scene.world.getParticleEmitter(0).getParticleCount() > 0, "particles");
     }
 
-    static final long PINNED_FIXED = 0x8F2A7AF191E84C88L;
+    static final long PINNED_FIXED = 0x553460A6D83104AEL;
     static final long PINNED_DYNAMIC = 0x6404D0B2607B98CEL;
 }

@@ -220,7 +220,8 @@ public final class BroadPhase {
     /**
      * Updates a proxy after its shape moved.
      *
-     * <p>If the tight AABB is still inside the fat one, nothing happens and false is returned;
+     * <p>If the tight AABB, swept by the displacement, is still inside the fat one, nothing happens
+     * and false is returned;
      * this is the common case for resting and slowly moving shapes. Otherwise the proxy gets the
      * fat AABB {@code tight + margin}, stretched on the side the shape moves towards by
      * {@link #DISPLACEMENT_MULTIPLIER} times the displacement, is re-inserted in the tree and put
@@ -273,7 +274,13 @@ public final class BroadPhase {
         float oldMinY = nodeMinY[leaf];
         float oldMaxX = nodeMaxX[leaf];
         float oldMaxY = nodeMaxY[leaf];
-        if (oldMinX <= minX && oldMinY <= minY && maxX <= oldMaxX && maxY <= oldMaxY) {
+        // The old box must hold the tight box swept by the coming displacement, or a body that was
+        // set moving fast inside its box would cross others unseen (no pair, no speculative contact).
+        float sweptMinX = dx < 0f ? minX + dx : minX;
+        float sweptMinY = dy < 0f ? minY + dy : minY;
+        float sweptMaxX = dx > 0f ? maxX + dx : maxX;
+        float sweptMaxY = dy > 0f ? maxY + dy : maxY;
+        if (oldMinX <= sweptMinX && oldMinY <= sweptMinY && sweptMaxX <= oldMaxX && sweptMaxY <= oldMaxY) {
             // The stretch is added to the slack so that a steadily moving shape, whose old box
             // trails behind, is re-inserted only when it leaves its box.
             float slackX = SHRINK_MARGINS * margin + Math.abs(ex);

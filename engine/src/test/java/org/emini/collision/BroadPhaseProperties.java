@@ -157,8 +157,9 @@ class BroadPhaseProperties {
                 t[2] = t[0] + w;
                 t[3] = t[1] + h;
                 float[] f = fat.get(id);
-                // The documented rule: re-insert when the tight box left the fat one, or when the
-                // fat one exceeds the new fat box by more than 4 margins plus the stretch.
+                // The documented rule: re-insert when the tight box swept by the displacement left
+                // the fat one, or when the fat one exceeds the new fat box by more than 4 margins
+                // plus the stretch.
                 float ex = BroadPhase.DISPLACEMENT_MULTIPLIER * m.vx();
                 float ey = BroadPhase.DISPLACEMENT_MULTIPLIER * m.vy();
                 float[] nf = {t[0] - margin, t[1] - margin, t[2] + margin, t[3] + margin};
@@ -172,7 +173,8 @@ class BroadPhaseProperties {
                 } else {
                     nf[3] += ey;
                 }
-                boolean inside = f[0] <= t[0] && f[1] <= t[1] && t[2] <= f[2] && t[3] <= f[3];
+                boolean inside = f[0] <= t[0] + Math.min(0f, m.vx()) && f[1] <= t[1] + Math.min(0f, m.vy())
+                        && t[2] + Math.max(0f, m.vx()) <= f[2] && t[3] + Math.max(0f, m.vy()) <= f[3];
                 float sx = 4f * margin + Math.abs(ex);
                 float sy = 4f * margin + Math.abs(ey);
                 boolean snug = nf[0] - sx <= f[0] && nf[1] - sy <= f[1] && f[2] <= nf[2] + sx
@@ -185,8 +187,9 @@ class BroadPhaseProperties {
                     moved.add(id);
                 }
                 float[] g = fat.get(id);
-                assertTrue(g[0] <= t[0] && g[1] <= t[1] && t[2] <= g[2] && t[3] <= g[3],
-                        "fat AABB encloses the tight one");
+                assertTrue(g[0] <= t[0] + Math.min(0f, m.vx()) && g[1] <= t[1] + Math.min(0f, m.vy())
+                        && t[2] + Math.max(0f, m.vx()) <= g[2] && t[3] + Math.max(0f, m.vy()) <= g[3],
+                        "fat AABB encloses the tight one swept by the displacement");
                 log.add("m" + id + result);
             } else if (op instanceof Destroy d) {
                 if (live.isEmpty()) {

@@ -120,11 +120,24 @@ class BroadPhaseTest {
         BroadPhase bp = new BroadPhase(2f);
         int p = bp.createProxy(10, 20, 30, 50, 7);
         update(bp);
-        assertFalse(bp.moveProxy(p, 11.5f, 18f, 31.9f, 51f, 0.5f, -0.5f));
+        assertFalse(bp.moveProxy(p, 11.5f, 18f, 31.9f, 51f, 0.05f, 0.5f));
         assertEquals(0, bp.getMoveCount());
         assertFalse(bp.isMoved(p));
         assertEquals(8f, bp.getFatMinX(p));
         assertEquals(52f, bp.getFatMaxY(p));
+    }
+
+    /** A box still inside its fat box but about to leave it (set moving fast) is re-inserted, so its pairs ahead are found. */
+    @Test
+    void moveInsideWhoseSweepLeavesTheFatAabbReinserts() {
+        BroadPhase bp = new BroadPhase(2f);
+        int p = bp.createProxy(10, 20, 30, 50, 7);
+        int ahead = bp.createProxy(100, 20, 102, 50, 8);
+        update(bp);
+        assertTrue(bp.moveProxy(p, 10, 20, 30, 50, 160f, 0f));
+        assertTrue(bp.getFatMaxX(p) >= 30f + 160f);
+        assertTrue(bp.testOverlap(p, ahead));
+        bp.validate();
     }
 
     @Test
@@ -168,7 +181,7 @@ class BroadPhaseTest {
         int reinserts = 0;
         for (int step = 1; step <= 100; step++) {
             float x = step * 10f;
-            boolean inside = bp.getFatMinX(p) <= x && x + 10f <= bp.getFatMaxX(p);
+            boolean inside = bp.getFatMinX(p) <= x && x + 10f + 10f <= bp.getFatMaxX(p);
             boolean moved = bp.moveProxy(p, x, 0, x + 10f, 10, 10f, 0);
             assertEquals(!inside, moved, "step " + step);
             if (moved) {
