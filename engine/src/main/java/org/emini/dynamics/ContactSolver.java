@@ -84,15 +84,11 @@ final class ContactSolver {
     private int pass;
     private boolean anyHot;
 
-    int count() {
-        return count;
-    }
-
     /**
      * Builds the constraints of all touching contacts from the poses at the start of the tick.
      * Softness is set per constraint: contacts with a static body use the stiffer setting.
      */
-    void prepare(Contact[] all, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft) {
+    void prepare(Contact[] all, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft, float maxCondition) {
         ensure(contactCount);
         float[] st = bodies.state;
         int k = 0;
@@ -170,7 +166,7 @@ final class ContactSolver {
             }
             f[fo + BLOCK] = 0f;
             if (c.pointCount == 2) {
-                prepareBlock(fo, mA, iA, mB, iB, nx, ny);
+                prepareBlock(fo, mA, iA, mB, iB, nx, ny, maxCondition);
             }
             k++;
         }
@@ -182,7 +178,7 @@ final class ContactSolver {
      * one after the other favours the first: a tower of boxes then creeps sideways and topples.
      * Solved together the result is exact and symmetric.
      */
-    private void prepareBlock(int fo, float mA, float iA, float mB, float iB, float nx, float ny) {
+    private void prepareBlock(int fo, float mA, float iA, float mB, float iB, float nx, float ny, float maxCondition) {
         int p1 = fo + P0;
         int p2 = p1 + PS;
         float rn1a = f[p1 + RAX] * ny - f[p1 + RAY] * nx;
@@ -194,24 +190,12 @@ final class ContactSolver {
         float k12 = mA + mB + iA * rn1a * rn2a + iB * rn1b * rn2b;
         float det = k11 * k22 - k12 * k12;
         // Nearly coincident points make the matrix ill-conditioned: solve those point by point.
-        if (k11 * k11 < 1000f * det) {
+        if (k11 * k11 < maxCondition * det) {
             float inv = 1f / det;
             f[fo + BLOCK] = 1f;
             f[fo + K11] = k22 * inv;
             f[fo + K12] = -k12 * inv;
             f[fo + K22] = k11 * inv;
-        }
-    }
-
-    /** Replaces the softness of every constraint (when the substep length changes). */
-    void resoften(Softness soft, Softness staticSoft) {
-        for (int k = 0; k < count; k++) {
-            int fo = k * CS;
-            int io = k * CI;
-            Softness sf = (n[io + BODY_A] == 0 || n[io + BODY_B] == 0) ? staticSoft : soft;
-            f[fo + BIAS_RATE] = sf.biasRate;
-            f[fo + MASS_SCALE] = sf.massScale;
-            f[fo + IMPULSE_SCALE] = sf.impulseScale;
         }
     }
 
@@ -288,53 +272,48 @@ final class ContactSolver {
         }
     }
 
+    /** The substep's soft, position-correcting pass over all contacts. */
+    void solve(SolverBodies bodies, SubstepContext ctx) {
+        pass(bodies, ctx, true, false);
+    }
+
     /**
-     * One Gauss–Seidel pass over all contacts.
-     *
-     * @param useBias true for the soft, position-correcting solve; false for the rigid relax pass
-     * @param invH 1 / substep length
-     * @param maxPush cap on the push-out speed (px/s)
-     * @param slop penetration left alone so resting contacts do not jitter (px)
+     * The substep's first rigid relax pass (no position bias), marking the bodies it changes by more
+     * than the hot tolerance for {@link #relaxHot}. With a horizon &ge; 0 (dynamic iterations; the
+     * warm start must have been recorded) it also measures {@link #lastChange}.
      */
-    void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop) {
-        solve(bodies, useBias, invH, maxPush, slop, -1f, 0f, 0f, false, Float.POSITIVE_INFINITY);
+    void relax(SolverBodies bodies, SubstepContext ctx) {
+        pass(bodies, ctx, false, false);
     }
 
     /**
      * Relax passes after the substep's first one, each over the contacts of the bodies the previous
-     * pass changed by more than {@code tolerance}, until none is or {@code maxPasses} are done.
+     * pass changed by more than the hot tolerance, until none is or the most passes are done.
      * Gauss–Seidel passes velocity across a mass ratio of r only at about 1/r per pass, so after an
      * impact a heavy body on a light one keeps the soft pass's push (it bounces although elasticity
      * is 0); resting contacts change by less than gravity adds per substep and cost nothing here.
      *
      * @return the passes made
      */
-    int relaxHot(SolverBodies bodies, float invH, float maxPush, float slop, float tolerance, int maxPasses) {
+    int relaxHot(SolverBodies bodies, SubstepContext ctx) {
         int made = 0;
-        while (made < maxPasses && anyHot) {
-            solve(bodies, false, invH, maxPush, slop, -1f, 0f, 0f, true, tolerance);
+        while (made < ctx.maxHotPasses && anyHot) {
+            pass(bodies, ctx, false, true);
             made++;
         }
         return made;
     }
 
-    /**
-     * Starts a substep's first relax pass, marking the bodies it changes by more than
-     * {@code tolerance} for {@link #relax}. With a horizon &ge; 0 (dynamic iterations; the
-     * warm start must have been recorded), it also measures {@link #lastChange}.
-     *
-     * @param horizon the time left in the tick after this substep (s), or negative not to measure
-     * @param gravityX gravity (px/s²), which may close a gap to a static body in that time
-     * @param gravityY gravity (px/s²)
-     */
-    void relax(SolverBodies bodies, float invH, float maxPush, float slop, float tolerance, float horizon,
-            float gravityX, float gravityY) {
-        solve(bodies, false, invH, maxPush, slop, horizon, gravityX, gravityY, false, tolerance);
-    }
-
-    private void solve(SolverBodies bodies, boolean useBias, float invH, float maxPush, float slop, float horizon,
-            float gravityX, float gravityY, boolean hotOnly, float hotTolerance) {
-        boolean trackChange = horizon >= 0f;
+    private void pass(SolverBodies bodies, SubstepContext ctx, boolean useBias, boolean hotOnly) {
+        float invH = ctx.invH;
+        float maxPush = ctx.maxPush;
+        float slop = ctx.slop;
+        float hotTolerance = useBias ? Float.POSITIVE_INFINITY : ctx.hotTolerance;
+        float horizon = ctx.horizon;
+        float gravityX = ctx.gravityX;
+        float gravityY = ctx.gravityY;
+        // Only the substep's first relax pass measures the change (hot passes follow it).
+        boolean trackChange = !useBias && !hotOnly && horizon >= 0f;
         float[] st = bodies.state;
         float maxChange = 0f;
         int[] hotStamp = hot;

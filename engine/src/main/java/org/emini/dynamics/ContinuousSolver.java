@@ -42,18 +42,12 @@ final class ContinuousSolver implements QueryCallback {
     private float a1;
     private float target;
     private float fraction;
-    private int sweeps;
     private float[] state;
 
     private final LandscapeSweep segments = new LandscapeSweep();
 
     ContinuousSolver(World world) {
         this.world = world;
-    }
-
-    /** Number of bodies swept in the last tick (diagnostics). */
-    int getSweepCount() {
-        return sweeps;
     }
 
     /**
@@ -64,7 +58,6 @@ final class ContinuousSolver implements QueryCallback {
      *     (nothing can be swept for it; the tick stops with an error naming it)
      */
     Body solve(SolverBodies sb, BroadPhase broadPhase, float target) {
-        sweeps = 0;
         this.target = target;
         float[] st = sb.state;
         state = st;
@@ -81,7 +74,6 @@ final class ContinuousSolver implements QueryCallback {
             if (travel <= 2f * TimeOfImpact.coreRadius(shape)) {
                 continue;
             }
-            sweeps++;
             moving = b;
             x1 = st[o + X];
             y1 = st[o + Y];

@@ -20,6 +20,9 @@ public final class SolverSettings {
     private float convergenceTolerance = 0.02f;
     private float impactTolerance = 5f;
     private int impactRelaxPasses = 10;
+    private float timeOfImpactTarget = 0.25f;
+    private float substepHertzRatio = 0.25f;
+    private float blockConditionLimit = 1000f;
     private float jointHertz = 60f;
     private float jointDampingRatio = 2f;
 
@@ -284,5 +287,72 @@ public final class SolverSettings {
             throw new IllegalArgumentException("SolverSettings.setImpactRelaxPasses: passes must be >= 0, was " + passes);
         }
         impactRelaxPasses = passes;
+    }
+
+    /**
+     * How deep the continuous pass leaves a fast body in what it would have passed through (px).
+     * Default 0.25 px: four default linear slops plus 0.05 px, inside the speculative distance, so the
+     * contact takes over in the next tick without a visible gap (Box2D v3 aims its time of impact at
+     * a few linear slops for the same reason).
+     *
+     * @return the depth (px)
+     */
+    public float getTimeOfImpactTarget() {
+        return timeOfImpactTarget;
+    }
+
+    /**
+     * Sets the continuous pass's target depth.
+     *
+     * @param px the depth (px), &gt; 0
+     */
+    public void setTimeOfImpactTarget(float px) {
+        timeOfImpactTarget = Check.positive("SolverSettings.setTimeOfImpactTarget", "px", px);
+    }
+
+    /**
+     * The stiffest contact and joint softness, as a fraction of the substep rate: the contact and
+     * joint frequencies are capped at this ratio times 1/h. Default 0.25, as Box2D v3 caps its
+     * contact hertz at a quarter of the substep rate; stiffer springs than that ring at the
+     * substep rate instead of acting stiffer.
+     *
+     * @return the ratio
+     */
+    public float getSubstepHertzRatio() {
+        return substepHertzRatio;
+    }
+
+    /**
+     * Sets the frequency cap as a fraction of the substep rate.
+     *
+     * @param ratio the ratio, in (0, 1]
+     */
+    public void setSubstepHertzRatio(float ratio) {
+        Check.positive("SolverSettings.setSubstepHertzRatio", "ratio", ratio);
+        substepHertzRatio = Check.unit("SolverSettings.setSubstepHertzRatio", "ratio", ratio);
+    }
+
+    /**
+     * The largest condition number (k11² / det K) for which a two-point contact's normal impulses
+     * are solved together as a block; more ill-conditioned pairs (nearly coincident points) are
+     * solved point by point. Default 1000, Box2D 2.4's maximum condition number.
+     *
+     * @return the limit
+     */
+    public float getBlockConditionLimit() {
+        return blockConditionLimit;
+    }
+
+    /**
+     * Sets the block solver's condition limit.
+     *
+     * @param limit the limit, &ge; 1
+     */
+    public void setBlockConditionLimit(float limit) {
+        Check.finite("SolverSettings.setBlockConditionLimit", "limit", limit);
+        if (limit < 1f) {
+            throw new IllegalArgumentException("SolverSettings.setBlockConditionLimit: limit must be >= 1, was " + limit);
+        }
+        blockConditionLimit = limit;
     }
 }

@@ -22,16 +22,13 @@ public final class SolverStep {
         this.world = world;
     }
 
-    void begin(float dt, float h, float jointHertz, float jointDampingRatio, float jointPushMax) {
+    void begin(float dt, float h, SolverSettings settings) {
         this.dt = dt;
-        this.jointPushMax = jointPushMax;
-        setSubstep(h, jointHertz, jointDampingRatio);
-    }
-
-    void setSubstep(float h, float jointHertz, float jointDampingRatio) {
         this.h = h;
         this.invH = 1f / h;
-        jointSoftness.set(Math.min(jointHertz, 0.25f * invH), jointDampingRatio, h);
+        this.jointPushMax = settings.getJointPushMaxVelocity();
+        float hertz = Math.min(settings.getJointHertz(), settings.getSubstepHertzRatio() * invH);
+        jointSoftness.set(hertz, settings.getJointDampingRatio(), h);
     }
 
     /**

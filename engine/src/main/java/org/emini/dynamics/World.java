@@ -41,9 +41,8 @@ public final class World {
     private float timestep = 1f / 20f;
     private int iterations = 10;
     private boolean dynamicIterations;
-    // Inside tick(): structural changes wait in pending. Inside the solve: the solver holds body copies.
+    // Inside tick(): structural changes wait in pending.
     private boolean ticking;
-    private boolean solving;
     private final PendingChanges pending = new PendingChanges();
     private float gravityX;
     private float gravityY = 100f;
@@ -61,10 +60,7 @@ public final class World {
 
     private final BroadPhase broadPhase;
     private final ContactManager contacts = new ContactManager(this);
-    private final SolverBodies solverBodies = new SolverBodies();
-    private final ContactSolver contactSolver = new ContactSolver();
-    private final SolverStep step = new SolverStep(solverBodies, this);
-    private final ContinuousSolver continuous = new ContinuousSolver(this);
+    private final Solver solver = new Solver(this);
     private Constraint[] constraints = new Constraint[8];
     private int constraintCount;
     private ExternalForce[] forces = new ExternalForce[4];
@@ -73,16 +69,12 @@ public final class World {
     private int eventCount;
     private PhysicsEventListener eventListener;
     private final ParticleSystem particles = new ParticleSystem();
-    private final Softness soft = new Softness();
-    private final Softness staticSoft = new Softness();
     private final float[] aabb = new float[4];
     private Landscape landscape = new Landscape();
     private final SimulationArea area = new SimulationArea();
     // Bodies whose pose or shape the application changed since the last tick.
     private Body[] dirtyBodies = new Body[16];
     private int dirtyCount;
-    private float lastSubstep;
-    private int lastIterationCount;
     private long tickCount;
 
     /** Creates an empty world with the original engine's defaults. */
@@ -165,7 +157,7 @@ public final class World {
      * @return the count
      */
     public int getLastIterationCount() {
-        return lastIterationCount;
+        return solver.getLastIterationCount();
     }
 
     /**
@@ -387,7 +379,7 @@ public final class World {
 
     /** Refuses a change of a body's pose, shape or kind while the solver holds a copy of it. */
     void checkNotSolving(String where) {
-        if (solving) {
+        if (solver.isSolving()) {
             throw new IllegalStateException(where + ": cannot change a body's pose, shape or kind while the world solves"
                 + " a tick (from a Constraint); change it before tick(), or from an ExternalForce or an event listener");
         }
@@ -397,20 +389,20 @@ public final class World {
     // its velocity and forces reaches the copy; velocities otherwise read from the body are stale.
 
     void bodyVelocitySet(Body b) {
-        if (solving && b.solverIndex != 0) {
-            solverBodies.setVelocity(b, b.vx, b.vy, b.w);
+        if (solver.isSolving() && b.solverIndex != 0) {
+            solver.bodies.setVelocity(b, b.vx, b.vy, b.w);
         }
     }
 
     void bodyImpulseApplied(Body b, float dvx, float dvy, float dw) {
-        if (solving && b.solverIndex != 0) {
-            solverBodies.addVelocity(b, dvx, dvy, dw);
+        if (solver.isSolving() && b.solverIndex != 0) {
+            solver.bodies.addVelocity(b, dvx, dvy, dw);
         }
     }
 
     void bodyForcesChanged(Body b) {
-        if (solving && b.solverIndex != 0) {
-            solverBodies.refreshForces(b, gravityX, gravityY, tickCount);
+        if (solver.isSolving() && b.solverIndex != 0) {
+            solver.bodies.refreshForces(b, gravityX, gravityY, tickCount);
         }
     }
 
@@ -936,7 +928,7 @@ public final class World {
             step();
         } finally {
             ticking = false;
-            solving = false;
+            solver.abort();
             pending.applyTo(this);
         }
     }
@@ -956,7 +948,13 @@ public final class World {
             contacts.gatherAll();
         }
         contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
-        solve(dt);
+        Body bad = solver.solve(this, area.bodies, area.count, contacts.active, contacts.activeCount, constraints,
+            constraintCount, broadPhase);
+        if (bad != null) {
+            throw new IllegalStateException("World.tick: Body#" + bad.getId() + " left the range of finite numbers in tick "
+                + tickCount + " (" + solver.bodies.describe(bad) + "); check the forces, velocities, gravity and timestep"
+                + " applied to it");
+        }
         if (particles.getEmitterCount() > 0) {
             particles.step(this, dt);
         }
@@ -991,95 +989,5 @@ public final class World {
             boolean moved = broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], b.vx * dt, b.vy * dt);
             contacts.findLandscapeContacts(b, moved, broadPhase);
         }
-    }
-
-    private void solve(float dt) {
-        int n = iterations;
-        float h = dt / n;
-        SolverBodies sb = solverBodies;
-        Body[] simulated = area.bodies;
-        int simulatedCount = area.count;
-        sb.reset(simulatedCount);
-        for (int i = 0; i < simulatedCount; i++) {
-            Body b = simulated[i];
-            b.solverIndex = sb.add(b, gravityX, gravityY, tickCount);
-        }
-        solving = true;
-        setSoftness(h);
-        float jointHertz = settings.getJointHertz();
-        float jointDamping = settings.getJointDampingRatio();
-        step.begin(dt, h, jointHertz, jointDamping, settings.getJointPushMaxVelocity());
-        contactSolver.prepare(contacts.active, contacts.activeCount, sb, soft, staticSoft);
-        // Stored impulses belong to the substep they were computed for.
-        if (lastSubstep != 0f && lastSubstep != h) {
-            contactSolver.scaleImpulses(h / lastSubstep);
-        }
-        Constraint[] cs = constraints;
-        int cn = constraintCount;
-        for (int c = 0; c < cn; c++) {
-            cs[c].prepare(step);
-        }
-        float maxPush = settings.getContactPushMaxVelocity();
-        float slop = settings.getLinearSlop();
-        float tolerance = settings.getConvergenceTolerance();
-        float impactTolerance = settings.getImpactTolerance();
-        int impactPasses = settings.getImpactRelaxPasses();
-        int used = 0;
-        float invH = 1f / h;
-        boolean converged = false;
-        for (int i = 0; i < n; i++) {
-            sb.integrateVelocities(h);
-            for (int c = 0; c < cn; c++) {
-                cs[c].warmStart(step);
-            }
-            contactSolver.warmStart(sb, dynamicIterations && !converged);
-            // Once converged, every later substep repeats the warm start alone: valid only while
-            // the impulses of a substep equal those it started from, which is what converged means.
-            if (!converged) {
-                for (int c = 0; c < cn; c++) {
-                    cs[c].solve(step, true);
-                }
-                contactSolver.solve(sb, true, invH, maxPush, slop);
-            }
-            sb.integratePositions(h);
-            if (!converged) {
-                float change = 0f;
-                for (int c = 0; c < cn; c++) {
-                    change = Math.max(change, cs[c].solve(step, false));
-                }
-                contactSolver.relax(sb, invH, maxPush, slop, impactTolerance, dynamicIterations ? (n - 1 - i) * h : -1f, gravityX, gravityY);
-                int hotPasses = contactSolver.relaxHot(sb, invH, maxPush, slop, impactTolerance, impactPasses);
-                used++;
-                converged = dynamicIterations && hotPasses == 0 && Math.max(change, contactSolver.lastChange) < tolerance;
-            }
-        }
-        contactSolver.applyRestitution(sb, settings.getRestitutionThreshold());
-        contactSolver.storeImpulses();
-        for (int c = 0; c < cn; c++) {
-            cs[c].finish(step);
-        }
-        Body escaped = continuous.solve(sb, broadPhase, 4f * slop + 0.05f);
-        if (escaped != null) {
-            // Thrown before the write-back: the bodies keep their last finite poses.
-            throw leftFiniteRange(escaped);
-        }
-        lastSubstep = h;
-        lastIterationCount = used;
-        Body bad = sb.writeBack(1f - dampingLateral, 1f - dampingRotational);
-        solving = false;
-        if (bad != null) {
-            throw leftFiniteRange(bad);
-        }
-    }
-
-    private IllegalStateException leftFiniteRange(Body b) {
-        return new IllegalStateException("World.tick: Body#" + b.getId() + " left the range of finite numbers in tick "
-            + tickCount + " (" + solverBodies.describe(b) + "); check the forces, velocities, gravity and timestep applied to it");
-    }
-
-    private void setSoftness(float h) {
-        float hertz = Math.min(settings.getContactHertz(), 0.25f / h);
-        soft.set(hertz, settings.getContactDampingRatio(), h);
-        staticSoft.set(2f * hertz, settings.getContactDampingRatio(), h);
     }
 }

@@ -1,0 +1,149 @@
+package org.emini.dynamics;
+
+import org.emini.collision.BroadPhase;
+
+/**
+ * The solve of one tick: the soft step of Box2D v3 (Catto's "solver2d" study) on flat copies of the
+ * simulated bodies. The tick is split into substeps, one per iteration; each integrates velocities,
+ * warm-starts the constraints and contacts, makes one soft (position-correcting) pass, integrates
+ * positions and makes rigid relax passes. Then restitution, the constraints' finish, the continuous
+ * pass that keeps fast bodies from passing through static ones, and the write-back with damping.
+ *
+ * <p>In dynamic-iteration mode the solve stops once a substep's impulses equal those it started
+ * from (within the convergence tolerance, as velocity) and no speculative gap can close in the rest
+ * of the tick; the remaining substeps only integrate and re-apply those impulses.
+ */
+final class Solver {
+    final SolverBodies bodies = new SolverBodies();
+    final SolverStep step;
+    private final ContactSolver contacts = new ContactSolver();
+    private final ContinuousSolver continuous;
+    private final Softness soft = new Softness();
+    private final Softness staticSoft = new Softness();
+    private final SubstepContext context = new SubstepContext();
+    // From copying the bodies in to writing them back: what the application sets on a body then
+    // must reach the copy.
+    private boolean solving;
+    private float lastSubstep;
+    private int lastIterationCount;
+
+    Solver(World world) {
+        step = new SolverStep(bodies, world);
+        continuous = new ContinuousSolver(world);
+    }
+
+    boolean isSolving() {
+        return solving;
+    }
+
+    int getLastIterationCount() {
+        return lastIterationCount;
+    }
+
+    /**
+     * Solves the tick.
+     *
+     * @param world the world, for its settings
+     * @param simulated the bodies to move, {@code simulatedCount} of them
+     * @param active the contacts the narrowphase updated, {@code activeCount} of them
+     * @param constraints the constraints, {@code constraintCount} of them, solved in this order
+     * @param broadPhase for the continuous pass
+     * @return null, or the first body whose state left the range of finite numbers (when the
+     *     continuous pass found it, nothing was written back)
+     */
+    Body solve(World world, Body[] simulated, int simulatedCount, Contact[] active, int activeCount,
+            Constraint[] constraints, int constraintCount, BroadPhase broadPhase) {
+        float dt = world.getTimestep();
+        int n = world.getConstraintIterations();
+        boolean dynamicIterations = world.isConstraintIterationDynamic();
+        float gravityX = world.getGravityX();
+        float gravityY = world.getGravityY();
+        long tick = world.getTickCount();
+        SolverSettings settings = world.getSolverSettings();
+        float h = dt / n;
+        SolverBodies sb = bodies;
+        sb.reset(simulatedCount);
+        for (int i = 0; i < simulatedCount; i++) {
+            Body b = simulated[i];
+            b.solverIndex = sb.add(b, gravityX, gravityY, tick);
+        }
+        solving = true;
+        setSoftness(settings, h);
+        step.begin(dt, h, settings);
+        contacts.prepare(active, activeCount, sb, soft, staticSoft, settings.getBlockConditionLimit());
+        // Stored impulses belong to the substep they were computed for.
+        if (lastSubstep != 0f && lastSubstep != h) {
+            contacts.scaleImpulses(h / lastSubstep);
+        }
+        Constraint[] cs = constraints;
+        int cn = constraintCount;
+        for (int c = 0; c < cn; c++) {
+            cs[c].prepare(step);
+        }
+        SubstepContext ctx = context;
+        ctx.invH = 1f / h;
+        ctx.maxPush = settings.getContactPushMaxVelocity();
+        ctx.slop = settings.getLinearSlop();
+        ctx.hotTolerance = settings.getImpactTolerance();
+        ctx.maxHotPasses = settings.getImpactRelaxPasses();
+        ctx.gravityX = gravityX;
+        ctx.gravityY = gravityY;
+        float tolerance = settings.getConvergenceTolerance();
+        int used = 0;
+        boolean converged = false;
+        for (int i = 0; i < n; i++) {
+            sb.integrateVelocities(h);
+            for (int c = 0; c < cn; c++) {
+                cs[c].warmStart(step);
+            }
+            contacts.warmStart(sb, dynamicIterations && !converged);
+            // Once converged, every later substep repeats the warm start alone: valid only while
+            // the impulses of a substep equal those it started from, which is what converged means.
+            if (!converged) {
+                for (int c = 0; c < cn; c++) {
+                    cs[c].solve(step, true);
+                }
+                contacts.solve(sb, ctx);
+            }
+            sb.integratePositions(h);
+            if (!converged) {
+                float change = 0f;
+                for (int c = 0; c < cn; c++) {
+                    change = Math.max(change, cs[c].solve(step, false));
+                }
+                ctx.horizon = dynamicIterations ? (n - 1 - i) * h : -1f;
+                contacts.relax(sb, ctx);
+                int hotPasses = contacts.relaxHot(sb, ctx);
+                used++;
+                converged = dynamicIterations && hotPasses == 0 && Math.max(change, contacts.lastChange) < tolerance;
+            }
+        }
+        contacts.applyRestitution(sb, settings.getRestitutionThreshold());
+        contacts.storeImpulses();
+        for (int c = 0; c < cn; c++) {
+            cs[c].finish(step);
+        }
+        lastSubstep = h;
+        lastIterationCount = used;
+        Body escaped = continuous.solve(sb, broadPhase, settings.getTimeOfImpactTarget());
+        if (escaped != null) {
+            // Not written back: the bodies keep their last finite poses.
+            solving = false;
+            return escaped;
+        }
+        Body bad = sb.writeBack(1f - world.getDampingLateral(), 1f - world.getDampingRotational());
+        solving = false;
+        return bad;
+    }
+
+    /** Resets the solve phase after a failure inside it (a constraint threw). */
+    void abort() {
+        solving = false;
+    }
+
+    private void setSoftness(SolverSettings settings, float h) {
+        float hertz = Math.min(settings.getContactHertz(), settings.getSubstepHertzRatio() / h);
+        soft.set(hertz, settings.getContactDampingRatio(), h);
+        staticSoft.set(2f * hertz, settings.getContactDampingRatio(), h);
+    }
+}
