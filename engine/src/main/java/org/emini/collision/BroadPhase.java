@@ -1,6 +1,7 @@
 package org.emini.collision;
 
 import java.util.Arrays;
+import org.emini.internal.HeapSort;
 import org.emini.math.EMath;
 
 /**
@@ -398,7 +399,7 @@ public final class BroadPhase {
             proxyMoveIndex[moveBuffer[i]] = NULL;
         }
         moveCount = 0;
-        heapSort(pairBuffer, pairCount);
+        HeapSort.sort(pairBuffer, pairCount);
 
         lockDepth++;
         try {
@@ -959,39 +960,6 @@ public final class BroadPhase {
         moveBuffer[index] = last;
         proxyMoveIndex[last] = index;
         proxyMoveIndex[proxyId] = NULL;
-    }
-
-    /**
-     * Sorts the first n longs ascending in place: heapsort needs no scratch memory and no
-     * recursion (java.util.Arrays.sort may allocate a merge buffer for partly sorted input).
-     */
-    private static void heapSort(long[] a, int n) {
-        for (int i = n / 2 - 1; i >= 0; i--) {
-            siftDown(a, i, n);
-        }
-        for (int end = n - 1; end > 0; end--) {
-            long top = a[0];
-            a[0] = a[end];
-            a[end] = top;
-            siftDown(a, 0, end);
-        }
-    }
-
-    private static void siftDown(long[] a, int i, int n) {
-        long value = a[i];
-        int child = 2 * i + 1;
-        while (child < n) {
-            if (child + 1 < n && a[child + 1] > a[child]) {
-                child++;
-            }
-            if (a[child] <= value) {
-                break;
-            }
-            a[i] = a[child];
-            i = child;
-            child = 2 * i + 1;
-        }
-        a[i] = value;
     }
 
     // ------------------------------------------------------------------------------------------

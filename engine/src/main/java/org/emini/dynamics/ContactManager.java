@@ -7,6 +7,7 @@ import org.emini.collision.Manifold;
 import org.emini.collision.PairCallback;
 import org.emini.collision.QueryCallback;
 import org.emini.collision.Segment;
+import org.emini.internal.HeapSort;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
 
@@ -36,7 +37,7 @@ final class ContactManager implements PairCallback, QueryCallback {
     /** The contacts collided and solved this tick. */
     Contact[] active = new Contact[64];
     int activeCount;
-    private int[] keys = new int[64];
+    private long[] keys = new long[64];
 
     // The landscape the contacts refer to; its changes advance the epoch, and a body whose epoch
     // is behind looks for its segments again.
@@ -310,10 +311,10 @@ final class ContactManager implements PairCallback, QueryCallback {
                 }
             }
         }
-        IntSort.sort(keys, k);
+        HeapSort.sort(keys, k);
         ensureActive(k);
         for (int i = 0; i < k; i++) {
-            active[i] = contacts[keys[i]];
+            active[i] = contacts[(int) keys[i]];
         }
         activeCount = k;
     }

@@ -2,6 +2,7 @@ package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
 import org.emini.collision.QueryCallback;
+import org.emini.internal.HeapSort;
 
 /**
  * The world's simulation area and the bodies it simulates this tick.
@@ -25,7 +26,7 @@ final class SimulationArea implements QueryCallback {
     int count;
     private Body[] previous = new Body[16];
     private int previousCount;
-    private int[] keys = new int[16];
+    private long[] keys = new long[16];
     private int keyCount;
 
     private World world;
@@ -95,10 +96,10 @@ final class SimulationArea implements QueryCallback {
             world = null;
             broadPhase = null;
             // World order, so the result does not depend on the tree's shape.
-            IntSort.sort(keys, keyCount);
+            HeapSort.sort(keys, keyCount);
             ensure(keyCount);
             for (int i = 0; i < keyCount; i++) {
-                bodies[count++] = w.getBody(keys[i]);
+                bodies[count++] = w.getBody((int) keys[i]);
             }
         }
         for (int i = 0; i < count; i++) {
