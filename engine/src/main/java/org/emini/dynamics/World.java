@@ -50,13 +50,7 @@ public final class World {
     private float dampingRotational;
     private final SolverSettings settings = new SolverSettings();
 
-    private Body[] bodies = new Body[16];
-    private int bodyCount;
-    private Body[] slots = new Body[16];
-    private int[] freeSlots = new int[16];
-    private int freeSlotCount;
-    private int slotHigh;
-    private int nextBodyId;
+    private final BodyTable bodies = new BodyTable();
 
     private final BroadPhase broadPhase;
     private final ContactManager contacts = new ContactManager(this);
@@ -253,30 +247,15 @@ public final class World {
             pending.add(PendingChanges.ADD_BODY, body);
             return;
         }
-        int slot = freeSlotCount > 0 ? freeSlots[--freeSlotCount] : slotHigh++;
-        if (slot == slots.length) {
-            Body[] grown = new Body[slots.length * 2];
-            System.arraycopy(slots, 0, grown, 0, slots.length);
-            slots = grown;
-        }
-        slots[slot] = body;
-        if (bodyCount == bodies.length) {
-            Body[] grown = new Body[bodies.length * 2];
-            System.arraycopy(bodies, 0, grown, 0, bodyCount);
-            bodies = grown;
-        }
+        bodies.add(body);
         body.world = this;
         body.forceTick = tickCount;
         body.awake = false;
         body.solverIndex = 0;
         body.proxyDirty = false;
         ContactManager.forgetLandscape(body);
-        body.id = nextBodyId++;
-        body.worldIndex = bodyCount;
-        bodies[bodyCount++] = body;
-        body.slot = slot;
         body.getShape().computeAabb(body.x, body.y, body.c, body.s, aabb);
-        body.proxyId = broadPhase.createProxy(aabb[0], aabb[1], aabb[2], aabb[3], slot, !body.isDynamic());
+        body.proxyId = broadPhase.createProxy(aabb[0], aabb[1], aabb[2], aabb[3], body.slot, !body.isDynamic());
     }
 
     /**
@@ -297,23 +276,9 @@ public final class World {
         removeConstraintsOf(body);
         particles.removeEmittersOf(body);
         broadPhase.destroyProxy(body.proxyId);
-        slots[body.slot] = null;
-        if (freeSlotCount == freeSlots.length) {
-            int[] grown = new int[freeSlotCount * 2];
-            System.arraycopy(freeSlots, 0, grown, 0, freeSlotCount);
-            freeSlots = grown;
-        }
-        freeSlots[freeSlotCount++] = body.slot;
-        int i = body.worldIndex;
-        System.arraycopy(bodies, i + 1, bodies, i, bodyCount - i - 1);
-        bodies[--bodyCount] = null;
-        for (int k = i; k < bodyCount; k++) {
-            bodies[k].worldIndex = k;
-        }
+        bodies.remove(body);
         body.world = null;
-        body.worldIndex = -1;
         body.proxyId = -1;
-        body.slot = -1;
         body.awake = false;
         body.solverIndex = 0;
         body.proxyDirty = false;
@@ -326,7 +291,7 @@ public final class World {
      * @return the count
      */
     public int getBodyCount() {
-        return bodyCount;
+        return bodies.count();
     }
 
     /**
@@ -336,29 +301,25 @@ public final class World {
      * @return the body
      */
     public Body getBody(int index) {
-        if (index < 0 || index >= bodyCount) {
-            throw new IndexOutOfBoundsException("World.getBody: index " + index + " of " + bodyCount);
+        int count = bodies.count();
+        if (index < 0 || index >= count) {
+            throw new IndexOutOfBoundsException("World.getBody: index " + index + " of " + count);
         }
-        return bodies[index];
+        return bodies.ordered()[index];
     }
 
     /**
-     * Finds a body by the id the world gave it.
+     * Finds a body by the id the world gave it, in O(log n) time (ids grow in the order of the list).
      *
      * @param id the id
      * @return the body, or null
      */
     public Body findBodyById(int id) {
-        for (int i = 0; i < bodyCount; i++) {
-            if (bodies[i].id == id) {
-                return bodies[i];
-            }
-        }
-        return null;
+        return bodies.findById(id);
     }
 
     Body bodyInSlot(int slot) {
-        return slots[slot];
+        return bodies.bySlot(slot);
     }
 
     int getBroadPhaseUserData(int proxyId) {
@@ -938,7 +899,7 @@ public final class World {
         for (int i = 0; i < forceCount; i++) {
             forces[i].applyForce(this, dt);
         }
-        area.collect(this, broadPhase, bodies, bodyCount);
+        area.collect(this, broadPhase, bodies.ordered(), bodies.count());
         contacts.beginLandscape(landscape);
         updateBroadPhase(dt);
         broadPhase.updatePairs(contacts);

@@ -1,0 +1,100 @@
+package org.emini.dynamics;
+
+/**
+ * The world's bodies three ways: in insertion order (the index of {@link World#getBody}, which events
+ * and the original's ids use), by slot (the broadphase's user data; slots are reused after removal),
+ * and by id (ids grow with insertion and removal keeps the order, so a binary search finds them).
+ *
+ * <p>Removal leaves a hole that the next ordered read closes in one pass: removing k bodies costs
+ * O(k) plus one O(n) compaction, not O(k·n).
+ */
+final class BodyTable {
+    private Body[] ordered = new Body[16];
+    // Entries in ordered, holes included, and holes not yet closed.
+    private int end;
+    private int holes;
+    private Body[] slots = new Body[16];
+    private int[] freeSlots = new int[16];
+    private int freeSlotCount;
+    private int slotHigh;
+    private int nextId;
+
+    /** Gives the body its id, slot and index and appends it. */
+    void add(Body body) {
+        compact();
+        int slot = freeSlotCount > 0 ? freeSlots[--freeSlotCount] : slotHigh++;
+        if (slot == slots.length) {
+            slots = java.util.Arrays.copyOf(slots, 2 * slots.length);
+        }
+        slots[slot] = body;
+        if (end == ordered.length) {
+            ordered = java.util.Arrays.copyOf(ordered, 2 * end);
+        }
+        body.id = nextId++;
+        body.slot = slot;
+        body.worldIndex = end;
+        ordered[end++] = body;
+    }
+
+    /** Takes the body out, leaving a hole in the order, and frees its slot. */
+    void remove(Body body) {
+        slots[body.slot] = null;
+        if (freeSlotCount == freeSlots.length) {
+            freeSlots = java.util.Arrays.copyOf(freeSlots, 2 * freeSlotCount);
+        }
+        freeSlots[freeSlotCount++] = body.slot;
+        ordered[body.worldIndex] = null;
+        holes++;
+        body.slot = -1;
+        body.worldIndex = -1;
+    }
+
+    int count() {
+        return end - holes;
+    }
+
+    /** The bodies in order, holes closed: read {@link #count()} of them. */
+    Body[] ordered() {
+        compact();
+        return ordered;
+    }
+
+    Body bySlot(int slot) {
+        return slots[slot];
+    }
+
+    Body findById(int id) {
+        Body[] list = ordered();
+        int lo = 0;
+        int hi = end - 1;
+        while (lo <= hi) {
+            int mid = (lo + hi) >>> 1;
+            int midId = list[mid].id;
+            if (midId < id) {
+                lo = mid + 1;
+            } else if (midId > id) {
+                hi = mid - 1;
+            } else {
+                return list[mid];
+            }
+        }
+        return null;
+    }
+
+    private void compact() {
+        if (holes == 0) {
+            return;
+        }
+        int kept = 0;
+        for (int i = 0; i < end; i++) {
+            Body b = ordered[i];
+            if (b != null) {
+                b.worldIndex = kept;
+                ordered[kept++] = b;
+            }
+        }
+        java.util.Arrays.fill(ordered, kept, end, null);
+        end = kept;
+        holes = 0;
+    }
+}
