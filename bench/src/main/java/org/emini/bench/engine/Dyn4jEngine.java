@@ -159,9 +159,8 @@ final class Dyn4jEngine implements BenchEngine {
     public void poses(double[] out) {
         for (int i = 0; i < bodies.length; i++) {
             // The body's origin is its centroid here (checked by PeerScene), as in the scene.
-            out[3 * i] = bodies[i].getTransform().getTranslationX() * PeerScene.PX_PER_M;
-            out[3 * i + 1] = -bodies[i].getTransform().getTranslationY() * PeerScene.PX_PER_M;
-            out[3 * i + 2] = -bodies[i].getTransform().getRotationAngle();
+            PeerScene.putPose(out, i, bodies[i].getTransform().getTranslationX(),
+                bodies[i].getTransform().getTranslationY(), bodies[i].getTransform().getRotationAngle());
         }
     }
 
@@ -169,7 +168,7 @@ final class Dyn4jEngine implements BenchEngine {
     public void speeds(double[] out) {
         for (int i = 0; i < bodies.length; i++) {
             Vector2 v = bodies[i].getLinearVelocity();
-            out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+            out[i] = PeerScene.speedPx(v.x, v.y);
         }
     }
 

@@ -172,9 +172,7 @@ final class GdxBox2dEngine implements BenchEngine {
     public void poses(double[] out) {
         for (int i = 0; i < bodies.length; i++) {
             Vector2 p = bodies[i].getPosition();
-            out[3 * i] = p.x * PeerScene.PX_PER_M;
-            out[3 * i + 1] = -p.y * PeerScene.PX_PER_M;
-            out[3 * i + 2] = -bodies[i].getAngle();
+            PeerScene.putPose(out, i, p.x, p.y, bodies[i].getAngle());
         }
     }
 
@@ -182,7 +180,7 @@ final class GdxBox2dEngine implements BenchEngine {
     public void speeds(double[] out) {
         for (int i = 0; i < bodies.length; i++) {
             Vector2 v = bodies[i].getLinearVelocity();
-            out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+            out[i] = PeerScene.speedPx(v.x, v.y);
         }
     }
 

@@ -178,9 +178,7 @@ final class JBox2dEngine implements BenchEngine {
     public void poses(double[] out) {
         for (int i = 0; i < bodies.length; i++) {
             Vec2 p = bodies[i].getPosition();
-            out[3 * i] = p.x * PeerScene.PX_PER_M;
-            out[3 * i + 1] = -p.y * PeerScene.PX_PER_M;
-            out[3 * i + 2] = -bodies[i].getAngle();
+            PeerScene.putPose(out, i, p.x, p.y, bodies[i].getAngle());
         }
     }
 
@@ -188,7 +186,7 @@ final class JBox2dEngine implements BenchEngine {
     public void speeds(double[] out) {
         for (int i = 0; i < bodies.length; i++) {
             Vec2 v = bodies[i].getLinearVelocity();
-            out[i] = Math.hypot(v.x, v.y) * PeerScene.PX_PER_M;
+            out[i] = PeerScene.speedPx(v.x, v.y);
         }
     }
 

@@ -23,6 +23,22 @@ final class PeerScene {
     /** Pixels per metre. */
     static final double PX_PER_M = 20.0;
 
+    /**
+     * Writes a peer body's pose, given in the peers' frame (metres, y up, angles counter-clockwise),
+     * into a pose array in the scene's (pixels, y down, angles clockwise): the one conversion every
+     * peer adapter uses.
+     */
+    static void putPose(double[] out, int i, double xMetres, double yMetres, double angle) {
+        out[3 * i] = xMetres * PX_PER_M;
+        out[3 * i + 1] = -yMetres * PX_PER_M;
+        out[3 * i + 2] = -angle;
+    }
+
+    /** A peer body's speed, given in metres per second, in pixels per second. */
+    static double speedPx(double vxMetres, double vyMetres) {
+        return Math.hypot(vxMetres, vyMetres) * PX_PER_M;
+    }
+
     final double timestep;
     final int iterations;
     final double gravityX;
