@@ -89,6 +89,8 @@ public final class BroadPhase {
     /** Pairs as (smaller id &lt;&lt; 32 | larger id), so that sorting the longs sorts the pairs. */
     private long[] pairBuffer;
     private int pairCount;
+    private int pairLimit = Integer.MAX_VALUE;
+    private boolean pairLimitReached;
 
     /** Query stack; queries may nest, each one using the entries above those of its caller. */
     private int[] stack;
@@ -136,6 +138,39 @@ public final class BroadPhase {
      */
     public float getMargin() {
         return margin;
+    }
+
+    /**
+     * Bounds the pairs one {@link #updatePairs} collects, so that many proxies in one spot (n of them
+     * overlap in n(n − 1)/2 pairs) cost bounded time and memory. Default: no limit.
+     *
+     * @param limit the most pairs collected, &gt; 0
+     * @throws IllegalArgumentException if limit is not positive
+     */
+    public void setPairLimit(int limit) {
+        if (limit <= 0) {
+            throw new IllegalArgumentException("setPairLimit: limit (" + limit + ") must be > 0");
+        }
+        pairLimit = limit;
+    }
+
+    /**
+     * The most pairs one {@link #updatePairs} collects.
+     *
+     * @return the limit
+     */
+    public int getPairLimit() {
+        return pairLimit;
+    }
+
+    /**
+     * Whether the last {@link #updatePairs} stopped at the limit: it reported the limit's worth of
+     * pairs, in order, and dropped the rest (they are reported again when their proxies next move).
+     *
+     * @return true when pairs were dropped
+     */
+    public boolean isPairLimitReached() {
+        return pairLimitReached;
     }
 
     // ------------------------------------------------------------------------------------------
@@ -371,7 +406,8 @@ public final class BroadPhase {
      * or touched, and not destroyed since), the tree is queried with its fat AABB. Every pair of
      * distinct proxies whose fat AABBs overlap, of which at least one is in the move buffer and at
      * least one is dynamic, is reported exactly once, in increasing order of (smaller id, larger id), with the user data of
-     * the smaller id first. No other pair is reported.
+     * the smaller id first. No other pair is reported. Beyond the {@linkplain #setPairLimit pair
+     * limit}, collection stops (in move-buffer order) and the remaining pairs are dropped.
      *
      * @param callback receives the pairs; it must not modify this broadphase
      * @throws IllegalArgumentException if callback is null
@@ -383,7 +419,8 @@ public final class BroadPhase {
             throw new IllegalArgumentException("updatePairs: callback is null");
         }
         pairCount = 0;
-        for (int i = 0; i < moveCount; i++) {
+        pairLimitReached = false;
+        for (int i = 0; i < moveCount && !pairLimitReached; i++) {
             collectPairs(moveBuffer[i]);
         }
         // Emptied before the callbacks run, so that a throwing callback leaves a clean state.
@@ -410,7 +447,7 @@ public final class BroadPhase {
      */
     private void collectPairs(int queryProxy) {
         collectPairs(queryProxy, DYNAMIC_TREE);
-        if (proxyTree[queryProxy] == DYNAMIC_TREE) {
+        if (proxyTree[queryProxy] == DYNAMIC_TREE && !pairLimitReached) {
             collectPairs(queryProxy, STATIC_TREE);
         }
     }
@@ -439,8 +476,13 @@ public final class BroadPhase {
             if (other == queryProxy || (other < queryProxy && proxyMoveIndex[other] != NULL)) {
                 continue;
             }
+            if (pairCount == pairLimit) {
+                pairLimitReached = true;
+                stackTop = base;
+                return;
+            }
             if (pairCount == pairBuffer.length) {
-                pairBuffer = Arrays.copyOf(pairBuffer, pairCount * 2);
+                pairBuffer = Arrays.copyOf(pairBuffer, (int) Math.min(pairLimit, 2L * pairCount));
             }
             pairBuffer[pairCount++] = other < queryProxy
                     ? ((long) other << 32) | queryProxy

@@ -798,6 +798,17 @@ public final class World {
     }
 
     /**
+     * Whether the last tick left pairs of bodies (or a body and a landscape segment) whose boxes
+     * met without contacts, because the world held {@link SolverSettings#getMaxContacts()}
+     * contacts: those bodies pass through each other until contacts end and make room.
+     *
+     * @return true when the contact capacity was reached
+     */
+    public boolean isContactCapacityReached() {
+        return contacts.capacityReached;
+    }
+
+    /**
      * The number of ticks run so far.
      *
      * @return the tick count
@@ -821,7 +832,7 @@ public final class World {
         area.collect(this, broadPhase, bodies, bodyCount);
         contacts.beginLandscape(landscape);
         updateBroadPhase(dt);
-        broadPhase.updatePairs(contacts);
+        contacts.updatePairs(broadPhase);
         if (area.isBounded()) {
             contacts.gather(area.bodies, area.count, tickCount);
         } else {
