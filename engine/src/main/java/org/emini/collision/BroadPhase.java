@@ -49,7 +49,7 @@ public final class BroadPhase {
     private static final int DYNAMIC_TREE = 1;
     private static final int INITIAL_CAPACITY = 16;
 
-    private final float margin;
+    private float margin;
 
     // Tree nodes, as parallel arrays indexed by node id. Leaves have height 0, free nodes -1.
     private float[] nodeMinX;
@@ -132,12 +132,57 @@ public final class BroadPhase {
     }
 
     /**
-     * The margin given to the constructor.
+     * The margin by which fat AABBs exceed the tight ones.
      *
-     * @return the distance (px) by which fat AABBs exceed the tight ones
+     * @return the distance (px)
      */
     public float getMargin() {
         return margin;
+    }
+
+    /**
+     * Changes the margin of every fat AABB at once: each grows (or shrinks) by the difference on
+     * every side, keeping its stretch, and every proxy goes into the move buffer, so the next
+     * {@link #updatePairs} reports the pairs a larger margin brings (a pair must be reported when
+     * fat boxes begin to overlap). Costs like moving every proxy; nothing when the margin is the
+     * same.
+     *
+     * @param margin the distance (px), finite and non-negative
+     * @throws IllegalArgumentException if margin is negative, NaN or infinite
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public void setMargin(float margin) {
+        checkUnlocked("setMargin");
+        if (!EMath.isFinite(margin) || margin < 0f) {
+            throw new IllegalArgumentException("setMargin: margin (" + margin + ") must be finite and >= 0");
+        }
+        float grow = margin - this.margin;
+        if (grow == 0f) {
+            return;
+        }
+        this.margin = margin;
+        for (int proxyId = 0; proxyId < proxyHighWater; proxyId++) {
+            int leaf = proxyNode[proxyId];
+            if (leaf != NULL) {
+                nodeMinX[leaf] -= grow;
+                nodeMinY[leaf] -= grow;
+                nodeMaxX[leaf] += grow;
+                nodeMaxY[leaf] += grow;
+                bufferMove(proxyId);
+            }
+        }
+        // Internal boxes from the leaves up, one height at a time.
+        int top = 0;
+        for (int node = 0; node < nodeHighWater; node++) {
+            top = Math.max(top, nodeHeight[node]);
+        }
+        for (int height = 1; height <= top; height++) {
+            for (int node = 0; node < nodeHighWater; node++) {
+                if (nodeHeight[node] == height) {
+                    refit(node);
+                }
+            }
+        }
     }
 
     /**

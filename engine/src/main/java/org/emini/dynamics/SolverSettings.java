@@ -79,7 +79,9 @@ public final class SolverSettings {
     }
 
     /**
-     * Sets the broadphase margin; takes effect for bodies added afterwards and when boxes move.
+     * Sets the broadphase margin. It takes effect at the world's next tick: every body's box, static
+     * and frozen ones too, is re-fattened to the new margin and its pairs are looked up again, a
+     * one-off cost like moving every body once.
      *
      * @param px the margin (px), ≥ 0
      */

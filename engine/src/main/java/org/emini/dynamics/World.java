@@ -853,6 +853,8 @@ public final class World {
 
     /** Moves the proxies of the simulated bodies and of the bodies the application moved. */
     private void updateBroadPhase(float dt) {
+        // A changed SolverSettings.setAabbMargin re-fattens every box (nothing when unchanged).
+        broadPhase.setMargin(settings.getAabbMargin());
         float[] box = aabb;
         for (int i = 0; i < dirtyCount; i++) {
             Body b = dirtyBodies[i];
