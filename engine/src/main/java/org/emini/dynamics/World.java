@@ -1,6 +1,7 @@
 package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
+import org.emini.collision.QueryCallback;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
 import org.emini.internal.Check;
@@ -63,6 +64,7 @@ public final class World {
     private final float[] aabb = new float[4];
     private Landscape landscape = new Landscape();
     private final SimulationArea area = new SimulationArea();
+    private final BodyQuery bodyQuery = new BodyQuery();
     // Bodies whose pose or shape the application changed since the last tick.
     private Body[] dirtyBodies = new Body[16];
     private int dirtyCount;
@@ -412,15 +414,7 @@ public final class World {
      * @param maxY the bottom edge (px), ≥ minY
      */
     public void setSimulationArea(float minX, float minY, float maxX, float maxY) {
-        String where = "World.setSimulationArea";
-        Check.finite(where, "minX", minX);
-        Check.finite(where, "minY", minY);
-        Check.finite(where, "maxX", maxX);
-        Check.finite(where, "maxY", maxY);
-        if (maxX < minX || maxY < minY) {
-            throw new IllegalArgumentException(where + ": the area (" + minX + ", " + minY + ") to (" + maxX + ", "
-                + maxY + ") has max < min");
-        }
+        checkRectangle("World.setSimulationArea", "area", minX, minY, maxX, maxY);
         area.set(minX, minY, maxX, maxY);
     }
 
@@ -493,6 +487,49 @@ public final class World {
      */
     public int getSimulatedBodyCount() {
         return area.count;
+    }
+
+    /**
+     * A body the last tick simulated (see {@link Body#isSimulated()}), in world order.
+     *
+     * @param index 0 to {@link #getSimulatedBodyCount()} − 1
+     * @return the body
+     */
+    public Body getSimulatedBody(int index) {
+        if (index < 0 || index >= area.count) {
+            throw new IndexOutOfBoundsException("World.getSimulatedBody: index " + index + " of " + area.count);
+        }
+        return area.bodies[index];
+    }
+
+    /**
+     * Reports, by their index in the world's list ({@link #getBody(int)}), the bodies whose bounding
+     * box, where they are now, overlaps a rectangle (touching counts), each once, in increasing
+     * index order, until the callback returns false. The cost follows the last tick's simulated
+     * bodies and the bodies found: static and frozen bodies elsewhere cost nothing, as they are
+     * found through the broadphase.
+     *
+     * @param minX the left edge (px)
+     * @param minY the top edge (px)
+     * @param maxX the right edge (px), ≥ minX
+     * @param maxY the bottom edge (px), ≥ minY
+     * @param callback receives the indices; it must not add or remove bodies
+     */
+    public void queryBodies(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        checkRectangle("World.queryBodies", "rectangle", minX, minY, maxX, maxY);
+        Check.notNull("World.queryBodies", "callback", callback);
+        bodyQuery.run(this, broadPhase, area, dirtyBodies, dirtyCount, minX, minY, maxX, maxY, callback);
+    }
+
+    private static void checkRectangle(String where, String what, float minX, float minY, float maxX, float maxY) {
+        Check.finite(where, "minX", minX);
+        Check.finite(where, "minY", minY);
+        Check.finite(where, "maxX", maxX);
+        Check.finite(where, "maxY", maxY);
+        if (maxX < minX || maxY < minY) {
+            throw new IllegalArgumentException(where + ": the " + what + " (" + minX + ", " + minY + ") to (" + maxX
+                + ", " + maxY + ") has max < min");
+        }
     }
 
     // ---------------------------------------------------------------------------------------------
