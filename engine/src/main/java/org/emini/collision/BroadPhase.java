@@ -50,7 +50,7 @@ public final class BroadPhase {
     private static final int DYNAMIC_TREE = 1;
     private static final int INITIAL_CAPACITY = 16;
 
-    private final float margin;
+    private float margin;
 
     // Tree nodes, as parallel arrays indexed by node id. Leaves have height 0, free nodes -1.
     private float[] nodeMinX;
@@ -90,6 +90,8 @@ public final class BroadPhase {
     /** Pairs as (smaller id &lt;&lt; 32 | larger id), so that sorting the longs sorts the pairs. */
     private long[] pairBuffer;
     private int pairCount;
+    private int pairLimit = Integer.MAX_VALUE;
+    private boolean pairLimitReached;
 
     /** Query stack; queries may nest, each one using the entries above those of its caller. */
     private int[] stack;
@@ -131,12 +133,90 @@ public final class BroadPhase {
     }
 
     /**
-     * The margin given to the constructor.
+     * The margin by which fat AABBs exceed the tight ones.
      *
-     * @return the distance (px) by which fat AABBs exceed the tight ones
+     * @return the distance (px)
      */
     public float getMargin() {
         return margin;
+    }
+
+    /**
+     * Changes the margin of every fat AABB at once: each grows (or shrinks) by the difference on
+     * every side, keeping its stretch, and every proxy goes into the move buffer, so the next
+     * {@link #updatePairs} reports the pairs a larger margin brings (a pair must be reported when
+     * fat boxes begin to overlap). Costs like moving every proxy; nothing when the margin is the
+     * same.
+     *
+     * @param margin the distance (px), finite and non-negative
+     * @throws IllegalArgumentException if margin is negative, NaN or infinite
+     * @throws IllegalStateException if called from inside a callback
+     */
+    public void setMargin(float margin) {
+        checkUnlocked("setMargin");
+        if (!EMath.isFinite(margin) || margin < 0f) {
+            throw new IllegalArgumentException("setMargin: margin (" + margin + ") must be finite and >= 0");
+        }
+        float grow = margin - this.margin;
+        if (grow == 0f) {
+            return;
+        }
+        this.margin = margin;
+        for (int proxyId = 0; proxyId < proxyHighWater; proxyId++) {
+            int leaf = proxyNode[proxyId];
+            if (leaf != NULL) {
+                nodeMinX[leaf] -= grow;
+                nodeMinY[leaf] -= grow;
+                nodeMaxX[leaf] += grow;
+                nodeMaxY[leaf] += grow;
+                bufferMove(proxyId);
+            }
+        }
+        // Internal boxes from the leaves up, one height at a time.
+        int top = 0;
+        for (int node = 0; node < nodeHighWater; node++) {
+            top = Math.max(top, nodeHeight[node]);
+        }
+        for (int height = 1; height <= top; height++) {
+            for (int node = 0; node < nodeHighWater; node++) {
+                if (nodeHeight[node] == height) {
+                    refit(node);
+                }
+            }
+        }
+    }
+
+    /**
+     * Bounds the pairs one {@link #updatePairs} collects, so that many proxies in one spot (n of them
+     * overlap in n(n − 1)/2 pairs) cost bounded time and memory. Default: no limit.
+     *
+     * @param limit the most pairs collected, &gt; 0
+     * @throws IllegalArgumentException if limit is not positive
+     */
+    public void setPairLimit(int limit) {
+        if (limit <= 0) {
+            throw new IllegalArgumentException("setPairLimit: limit (" + limit + ") must be > 0");
+        }
+        pairLimit = limit;
+    }
+
+    /**
+     * The most pairs one {@link #updatePairs} collects.
+     *
+     * @return the limit
+     */
+    public int getPairLimit() {
+        return pairLimit;
+    }
+
+    /**
+     * Whether the last {@link #updatePairs} stopped at the limit: it reported the limit's worth of
+     * pairs, in order, and dropped the rest (they are reported again when their proxies next move).
+     *
+     * @return true when pairs were dropped
+     */
+    public boolean isPairLimitReached() {
+        return pairLimitReached;
     }
 
     // ------------------------------------------------------------------------------------------
@@ -379,7 +459,8 @@ public final class BroadPhase {
      * or touched, and not destroyed since), the tree is queried with its fat AABB. Every pair of
      * distinct proxies whose fat AABBs overlap, of which at least one is in the move buffer and at
      * least one is dynamic, is reported exactly once, in increasing order of (smaller id, larger id), with the user data of
-     * the smaller id first. No other pair is reported.
+     * the smaller id first. No other pair is reported. Beyond the {@linkplain #setPairLimit pair
+     * limit}, collection stops (in move-buffer order) and the remaining pairs are dropped.
      *
      * @param callback receives the pairs; it must not modify this broadphase
      * @throws IllegalArgumentException if callback is null
@@ -391,7 +472,8 @@ public final class BroadPhase {
             throw new IllegalArgumentException("updatePairs: callback is null");
         }
         pairCount = 0;
-        for (int i = 0; i < moveCount; i++) {
+        pairLimitReached = false;
+        for (int i = 0; i < moveCount && !pairLimitReached; i++) {
             collectPairs(moveBuffer[i]);
         }
         // Emptied before the callbacks run, so that a throwing callback leaves a clean state.
@@ -418,7 +500,7 @@ public final class BroadPhase {
      */
     private void collectPairs(int queryProxy) {
         collectPairs(queryProxy, DYNAMIC_TREE);
-        if (proxyTree[queryProxy] == DYNAMIC_TREE) {
+        if (proxyTree[queryProxy] == DYNAMIC_TREE && !pairLimitReached) {
             collectPairs(queryProxy, STATIC_TREE);
         }
     }
@@ -447,8 +529,13 @@ public final class BroadPhase {
             if (other == queryProxy || (other < queryProxy && proxyMoveIndex[other] != NULL)) {
                 continue;
             }
+            if (pairCount == pairLimit) {
+                pairLimitReached = true;
+                stackTop = base;
+                return;
+            }
             if (pairCount == pairBuffer.length) {
-                pairBuffer = Arrays.copyOf(pairBuffer, pairCount * 2);
+                pairBuffer = Arrays.copyOf(pairBuffer, (int) Math.min(pairLimit, 2L * pairCount));
             }
             pairBuffer[pairCount++] = other < queryProxy
                     ? ((long) other << 32) | queryProxy

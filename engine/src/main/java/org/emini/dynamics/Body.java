@@ -722,6 +722,17 @@ public final class Body {
     }
 
     /**
+     * Whether the world's last tick moved this body: a dynamic body inside the simulation area, or
+     * any dynamic body without one. Static bodies, bodies frozen outside the area and bodies added
+     * since the last tick stood still.
+     *
+     * @return true when the last tick simulated it
+     */
+    public boolean isSimulated() {
+        return awake;
+    }
+
+    /**
      * The number of contacts (touching or about to touch) this body had in the last tick.
      *
      * @return the contact count

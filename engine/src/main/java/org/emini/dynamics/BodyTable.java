@@ -21,7 +21,7 @@ final class BodyTable {
 
     /** Gives the body its id, slot and index and appends it. */
     void add(Body body) {
-        compact();
+        closeHoles();
         int slot = freeSlotCount > 0 ? freeSlots[--freeSlotCount] : slotHigh++;
         if (slot == slots.length) {
             slots = java.util.Arrays.copyOf(slots, 2 * slots.length);
@@ -55,7 +55,7 @@ final class BodyTable {
 
     /** The bodies in order, holes closed: read {@link #count()} of them. */
     Body[] ordered() {
-        compact();
+        closeHoles();
         return ordered;
     }
 
@@ -81,7 +81,8 @@ final class BodyTable {
         return null;
     }
 
-    private void compact() {
+    /** Closes the holes removals left, so every body's index is its place in the order. */
+    void closeHoles() {
         if (holes == 0) {
             return;
         }

@@ -38,6 +38,10 @@ final class ContactManager implements PairCallback, QueryCallback {
     Contact[] active = new Contact[64];
     int activeCount;
     private long[] keys = new long[64];
+    /** The pairs in contact, so that a reported pair is checked in O(1). */
+    private final PairCounts pairs = new PairCounts();
+    /** Whether this tick left a pair without contacts: the world was at its contact capacity. */
+    boolean capacityReached;
 
     // The landscape the contacts refer to; its changes advance the epoch, and a body whose epoch
     // is behind looks for its segments again.
@@ -71,21 +75,35 @@ final class ContactManager implements PairCallback, QueryCallback {
         if (a == null || b == null || a == b || !shouldCollide(a, b)) {
             return;
         }
-        // Already in contact? Walk the shorter list.
-        Body shorter = a.contactCount <= b.contactCount ? a : b;
-        Body other = shorter == a ? b : a;
-        for (Contact k = shorter.contactList; k != null; k = k.next(shorter)) {
-            if (k.getOther(shorter) == other) {
-                return;
-            }
+        if (pairs.contains(PairCounts.bodies(slotA, slotB))) {
+            return;
         }
         int na = partCount(a.getShape());
         int nb = partCount(b.getShape());
+        if (full(na * nb)) {
+            return;
+        }
         for (int i = 0; i < na; i++) {
             for (int j = 0; j < nb; j++) {
                 create(a, b, i, j);
             }
         }
+    }
+
+    /** Whether n more contacts would exceed the world's capacity (noted for the tick if so). */
+    private boolean full(int n) {
+        if (count + n <= world.getSolverSettings().getMaxContacts()) {
+            return false;
+        }
+        capacityReached = true;
+        return true;
+    }
+
+    /** Reports the broadphase's new pairs, at most the contact capacity of them. */
+    void updatePairs(BroadPhase broadPhase) {
+        broadPhase.setPairLimit(world.getSolverSettings().getMaxContacts());
+        broadPhase.updatePairs(this);
+        capacityReached |= broadPhase.isPairLimitReached();
     }
 
     private Contact create(Body a, Body b, int partA, int partB) {
@@ -122,6 +140,9 @@ final class ContactManager implements PairCallback, QueryCallback {
         }
         c.index = count;
         contacts[count++] = c;
+        if (b != null) {
+            pairs.add(PairCounts.bodies(a.slot, b.slot));
+        }
         return c;
     }
 
@@ -173,6 +194,8 @@ final class ContactManager implements PairCallback, QueryCallback {
     }
 
     void destroy(Contact c) {
+        pairs.remove(c.bodyB != null ? PairCounts.bodies(c.bodyA.slot, c.bodyB.slot)
+            : PairCounts.segment(c.bodyA.slot, c.segmentSlot));
         unlink(c, c.bodyA, c.prevA, c.nextA);
         if (c.bodyB != null) {
             unlink(c, c.bodyB, c.prevB, c.nextB);
@@ -217,6 +240,8 @@ final class ContactManager implements PairCallback, QueryCallback {
      * any change of the segments sends every body back to look for its segments.
      */
     void beginLandscape(Landscape l) {
+        // The first call of a tick.
+        capacityReached = false;
         if (l != landscape) {
             for (int i = 0; i < count;) {
                 if (contacts[i].segmentSlot >= 0) {
@@ -262,25 +287,20 @@ final class ContactManager implements PairCallback, QueryCallback {
     @Override
     public boolean reportProxy(int slot) {
         Body b = queryBody;
+        long key = PairCounts.segment(b.slot, slot);
+        // A body's parts touch a segment together: they are created and destroyed together.
         int parts = partCount(b.getShape());
+        if (pairs.contains(key) || full(parts)) {
+            return true;
+        }
         for (int k = 0; k < parts; k++) {
-            if (!hasLandscapeContact(b, slot, k)) {
-                Contact c = create(b, null, k, 0);
-                c.landscape = landscape;
-                c.segmentSlot = slot;
-                c.segmentStamp = landscape.stampOf(slot);
-            }
+            Contact c = create(b, null, k, 0);
+            c.landscape = landscape;
+            c.segmentSlot = slot;
+            c.segmentStamp = landscape.stampOf(slot);
+            pairs.add(key);
         }
         return true;
-    }
-
-    private static boolean hasLandscapeContact(Body b, int slot, int part) {
-        for (Contact k = b.contactList; k != null; k = k.next(b)) {
-            if (k.segmentSlot == slot && k.partA == part) {
-                return true;
-            }
-        }
-        return false;
     }
 
     // ---------------------------------------------------------------------------------------------

@@ -79,7 +79,6 @@ final class SimulationArea implements QueryCallback {
             Body b = previous[i];
             b.awake = false;
             b.solverIndex = 0;
-            previous[i] = null;
         }
         if (!bounded) {
             ensure(allCount);
@@ -105,6 +104,29 @@ final class SimulationArea implements QueryCallback {
         for (int i = 0; i < count; i++) {
             bodies[i].awake = true;
         }
+        for (int i = 0; i < previousCount; i++) {
+            Body b = previous[i];
+            previous[i] = null;
+            if (!b.awake && b.world == w) {
+                fitFrozen(b, bp);
+            }
+        }
+    }
+
+    /**
+     * A body that just stopped being simulated keeps its broadphase box until it wakes, but the
+     * solver moved it after that box was last fitted (at the start of its last tick), possibly out
+     * of it: fit it again if so, so that queries of the broadphase (this area's, World.queryBodies)
+     * find it where it is.
+     */
+    private void fitFrozen(Body b, BroadPhase bp) {
+        b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
+        int p = b.proxyId;
+        if (box[0] < bp.getFatMinX(p) || box[1] < bp.getFatMinY(p) || box[2] > bp.getFatMaxX(p)
+            || box[3] > bp.getFatMaxY(p)) {
+            bp.moveProxy(p, box[0], box[1], box[2], box[3], 0f, 0f);
+            ContactManager.forgetLandscape(b);
+        }
     }
 
     @Override
@@ -128,7 +150,8 @@ final class SimulationArea implements QueryCallback {
         if (bodies.length < n) {
             int c = Math.max(n, 2 * bodies.length);
             bodies = new Body[c];
-            previous = new Body[c];
+            // Still read after the new list is made (fitFrozen).
+            previous = java.util.Arrays.copyOf(previous, c);
         }
     }
 }

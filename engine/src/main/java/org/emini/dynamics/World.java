@@ -1,6 +1,7 @@
 package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
+import org.emini.collision.QueryCallback;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
 import org.emini.internal.Check;
@@ -66,6 +67,7 @@ public final class World {
     private final float[] aabb = new float[4];
     private Landscape landscape = new Landscape();
     private final SimulationArea area = new SimulationArea();
+    private final BodyQuery bodyQuery = new BodyQuery();
     // Bodies whose pose or shape the application changed since the last tick.
     private Body[] dirtyBodies = new Body[16];
     private int dirtyCount;
@@ -430,15 +432,7 @@ public final class World {
      * @param maxY the bottom edge (px), ≥ minY
      */
     public void setSimulationArea(float minX, float minY, float maxX, float maxY) {
-        String where = "World.setSimulationArea";
-        Check.finite(where, "minX", minX);
-        Check.finite(where, "minY", minY);
-        Check.finite(where, "maxX", maxX);
-        Check.finite(where, "maxY", maxY);
-        if (maxX < minX || maxY < minY) {
-            throw new IllegalArgumentException(where + ": the area (" + minX + ", " + minY + ") to (" + maxX + ", "
-                + maxY + ") has max < min");
-        }
+        checkRectangle("World.setSimulationArea", "area", minX, minY, maxX, maxY);
         area.set(minX, minY, maxX, maxY);
     }
 
@@ -511,6 +505,51 @@ public final class World {
      */
     public int getSimulatedBodyCount() {
         return area.count;
+    }
+
+    /**
+     * A body the last tick simulated (see {@link Body#isSimulated()}), in world order.
+     *
+     * @param index 0 to {@link #getSimulatedBodyCount()} − 1
+     * @return the body
+     */
+    public Body getSimulatedBody(int index) {
+        if (index < 0 || index >= area.count) {
+            throw new IndexOutOfBoundsException("World.getSimulatedBody: index " + index + " of " + area.count);
+        }
+        return area.bodies[index];
+    }
+
+    /**
+     * Reports, by their index in the world's list ({@link #getBody(int)}), the bodies whose bounding
+     * box, where they are now, overlaps a rectangle (touching counts), each once, in increasing
+     * index order, until the callback returns false. The cost follows the last tick's simulated
+     * bodies and the bodies found: static and frozen bodies elsewhere cost nothing, as they are
+     * found through the broadphase.
+     *
+     * @param minX the left edge (px)
+     * @param minY the top edge (px)
+     * @param maxX the right edge (px), ≥ minX
+     * @param maxY the bottom edge (px), ≥ minY
+     * @param callback receives the indices; it must not add or remove bodies
+     */
+    public void queryBodies(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
+        checkRectangle("World.queryBodies", "rectangle", minX, minY, maxX, maxY);
+        Check.notNull("World.queryBodies", "callback", callback);
+        // Results come in world order, by index.
+        bodies.closeHoles();
+        bodyQuery.run(this, broadPhase, area, dirtyBodies, dirtyCount, minX, minY, maxX, maxY, callback);
+    }
+
+    private static void checkRectangle(String where, String what, float minX, float minY, float maxX, float maxY) {
+        Check.finite(where, "minX", minX);
+        Check.finite(where, "minY", minY);
+        Check.finite(where, "maxX", maxX);
+        Check.finite(where, "maxY", maxY);
+        if (maxX < minX || maxY < minY) {
+            throw new IllegalArgumentException(where + ": the " + what + " (" + minX + ", " + minY + ") to (" + maxX
+                + ", " + maxY + ") has max < min");
+        }
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -859,6 +898,17 @@ public final class World {
     }
 
     /**
+     * Whether the last tick left pairs of bodies (or a body and a landscape segment) whose boxes
+     * met without contacts, because the world held {@link SolverSettings#getMaxContacts()}
+     * contacts: those bodies pass through each other until contacts end and make room.
+     *
+     * @return true when the contact capacity was reached
+     */
+    public boolean isContactCapacityReached() {
+        return contacts.capacityReached;
+    }
+
+    /**
      * The number of ticks run so far.
      *
      * @return the tick count
@@ -902,7 +952,7 @@ public final class World {
         area.collect(this, broadPhase, bodies.ordered(), bodies.count());
         contacts.beginLandscape(landscape);
         updateBroadPhase(dt);
-        broadPhase.updatePairs(contacts);
+        contacts.updatePairs(broadPhase);
         if (area.isBounded()) {
             contacts.gather(area.bodies, area.count, tickCount);
         } else {
@@ -929,6 +979,8 @@ public final class World {
 
     /** Moves the proxies of the simulated bodies and of the bodies the application moved. */
     private void updateBroadPhase(float dt) {
+        // A changed SolverSettings.setAabbMargin re-fattens every box (nothing when unchanged).
+        broadPhase.setMargin(settings.getAabbMargin());
         float[] box = aabb;
         for (int i = 0; i < dirtyCount; i++) {
             Body b = dirtyBodies[i];

@@ -71,6 +71,21 @@ public final class Check {
      * @param where the call, for the message
      * @param what the argument, for the message
      * @param value the value
+     * @param min the smallest value allowed
+     * @param max the largest value allowed
+     * @return value, when it is in [min, max]
+     */
+    public static float within(String where, String what, float value, float min, float max) {
+        if (!(value >= min && value <= max)) {
+            throw new IllegalArgumentException(where + ": " + what + " must be in [" + min + ", " + max + "], was " + value);
+        }
+        return value;
+    }
+
+    /**
+     * @param where the call, for the message
+     * @param what the argument, for the message
+     * @param value the value
      * @return value, a limit: at least 0, where positive infinity means no limit
      */
     public static float limit(String where, String what, float value) {

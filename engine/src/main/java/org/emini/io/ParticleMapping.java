@@ -11,8 +11,7 @@ final class ParticleMapping {
     /**
      * Builds an emitter, or lists it.
      *
-     * @param limit the largest capacity built: the engine allocates every emitter's pool at once,
-     *     and a file may ask for 2³¹ − 1 particles
+     * @param limit the largest capacity built: a file may ask for 2³¹ − 1 particles
      * @return the emitter, or null when it is not built
      */
     static ParticleEmitter build(PhyParticleEmitter p, int index, BuildResult r, int limit) {

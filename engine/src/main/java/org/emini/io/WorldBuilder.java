@@ -48,8 +48,9 @@ public final class WorldBuilder {
     /** The default thickness of the slab that stands in for a line shape (px). */
     public static final float DEFAULT_LINE_THICKNESS = 1f;
     /**
-     * The default largest particle-emitter capacity built (2 MiB of particle state): the engine
-     * allocates an emitter's pool at once, and a file may ask for 2³¹ − 1 particles.
+     * The default largest particle-emitter capacity built (2 MiB of particle state when full): a
+     * file may ask for 2³¹ − 1 particles; the engine takes at most
+     * {@link org.emini.particle.ParticleEmitter#MAX_PARTICLES}.
      */
     public static final int DEFAULT_PARTICLE_LIMIT = 1 << 16;
 
@@ -102,7 +103,7 @@ public final class WorldBuilder {
 
     /**
      * Sets the largest particle-emitter capacity built; emitters asking for more are listed as
-     * unsupported instead of allocating their pools.
+     * unsupported instead of being built.
      *
      * @param particles the limit, &gt; 0
      * @return this builder

@@ -16,12 +16,14 @@ import org.emini.shape.Shape;
  * interacting bodies (circles, polygons, multi-shapes) whose motion over the tick overlaps the
  * particles' region are taken, whatever their layers (as in the original). Each keeps its pose at
  * the end of the tick (the solver's result) and its pose at the start, extrapolated back with its
- * final velocities, so a particle's motion can be tested relative to a moving body; a body frozen
- * outside the simulation area stands still. The grid is built from exact current boxes rather than
- * queried from the world's broadphase, whose fat boxes may lag behind a body that the solver moved
- * beyond its margin (and whose queries measured 2 to 20 times slower here); a per-tick counting
- * sort costs O(bodies) and allocates nothing once its arrays have grown. The landscape's segments
- * near the region come from its own index.
+ * final velocities, so a particle's motion can be tested relative to a moving body; a body the
+ * tick did not simulate (static, or frozen outside the simulation area) stands still. The bodies
+ * come from {@link World#queryBodies} (exact current boxes: the simulated bodies one by one, the
+ * others through the broadphase), so the cost follows the simulated bodies and those near the
+ * particles, never the frozen ones elsewhere; particles then query the grid, which measured 2 to 20
+ * times faster here than querying the broadphase per particle. The per-tick counting sort costs
+ * O(bodies taken) and allocates nothing once its arrays have grown. The landscape's segments near
+ * the region come from its own index.
  *
  * <p>The cell size is the mean body size, but at least 1/128 of the region, so the grid has at most
  * 128 × 128 cells. Bodies that would cover more than {@link #MAX_CELLS_PER_BODY} cells (walls, the
@@ -89,11 +91,10 @@ final class ObstacleGrid implements QueryCallback {
     private float sizeSum;
     /** The landscape being queried in {@link #build}. */
     private Landscape landscape;
-    // Per world body: a cheap box around its motion this tick (min x = +inf for bodies left out).
-    private float[] reachMinX = new float[16];
-    private float[] reachMinY = new float[16];
-    private float[] reachMaxX = new float[16];
-    private float[] reachMaxY = new float[16];
+    /** The world indices of the bodies a query found. */
+    private final Candidates candidates = new Candidates();
+    /** Bodies looked at by the last {@link #build} (simulated ones and those queries found). */
+    int visited;
 
     /**
      * Takes the world's bodies that may meet a particle moving inside the region this tick.
@@ -101,40 +102,27 @@ final class ObstacleGrid implements QueryCallback {
      * <p>A particle found inside a body is moved out through the nearest face, which may take it
      * out of the region by up to half the body's narrower side; the region is grown by the largest
      * such distance among the bodies it touches, so that the bodies where it may land are known too.
+     *
+     * <p>Bodies are found with {@link World#queryBodies}, the region grown by the farthest a
+     * simulated body moved this tick, so the cost follows the simulated bodies and the bodies near
+     * the particles: bodies frozen or static elsewhere cost nothing.
      */
     void build(World world, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
         count = 0;
         largeCount = 0;
-        int n = world.getBodyCount();
-        if (reachMinX.length < n) {
-            int size = Math.max(n, 2 * reachMinX.length);
-            reachMinX = new float[size];
-            reachMinY = new float[size];
-            reachMaxX = new float[size];
-            reachMaxY = new float[size];
+        float maxReach = 0f;
+        int simulated = world.getSimulatedBodyCount();
+        for (int i = 0; i < simulated; i++) {
+            maxReach = Math.max(maxReach, reach(world.getSimulatedBody(i), dt));
         }
-        // First pass: a cheap box around each body's motion, and the margin.
+        visited = simulated;
+        // First the bodies that touch the region, for the margin.
+        query(world, rMinX - maxReach, rMinY - maxReach, rMaxX + maxReach, rMaxY + maxReach);
         float margin = 0f;
-        for (int i = 0; i < n; i++) {
-            Body b = world.getBody(i);
-            Shape shape = b.getShape();
-            int type = shape.getType();
-            if (!b.isInteracting() || type != Shape.TYPE_CIRCLE && type != Shape.TYPE_POLYGON && type != Shape.TYPE_MULTI) {
-                reachMinX[i] = Float.POSITIVE_INFINITY;
-                continue;
-            }
-            shape.computeAabb(b.getX(), b.getY(), b.getCos(), b.getSin(), box);
-            float reach = frozen(world, b) ? 0f : (Math.abs(b.getVelocityX()) + Math.abs(b.getVelocityY())
-                + Math.abs(b.getAngularVelocity()) * shape.getBoundingRadius()) * dt;
-            float lowX = box[0] - reach;
-            float lowY = box[1] - reach;
-            float highX = box[2] + reach;
-            float highY = box[3] + reach;
-            reachMinX[i] = lowX;
-            reachMinY[i] = lowY;
-            reachMaxX[i] = highX;
-            reachMaxY[i] = highY;
-            if (lowX <= rMaxX && highX >= rMinX && lowY <= rMaxY && highY >= rMinY) {
+        for (int j = 0; j < candidates.count; j++) {
+            Body b = world.getBody(candidates.index[j]);
+            if (collides(b) && mayReach(b, dt, rMinX, rMinY, rMaxX, rMaxY)) {
+                shapeBox(b);
                 margin = Math.max(margin, 0.5f * Math.min(box[2] - box[0], box[3] - box[1]));
             }
         }
@@ -146,20 +134,23 @@ final class ObstacleGrid implements QueryCallback {
         regionMinY = rMinY;
         regionMaxX = rMaxX;
         regionMaxY = rMaxY;
-        // Second pass: the bodies in reach of the grown region, with both poses.
+        if (margin > 0f) {
+            query(world, rMinX - maxReach, rMinY - maxReach, rMaxX + maxReach, rMaxY + maxReach);
+        }
+        // Then the bodies in reach of the grown region, with both poses, in world order.
         sizeSum = 0f;
-        for (int i = 0; i < n; i++) {
-            if (reachMinX[i] > rMaxX || reachMaxX[i] < rMinX || reachMinY[i] > rMaxY || reachMaxY[i] < rMinY) {
+        for (int j = 0; j < candidates.count; j++) {
+            Body b = world.getBody(candidates.index[j]);
+            if (!collides(b) || !mayReach(b, dt, rMinX, rMinY, rMaxX, rMaxY)) {
                 continue;
             }
-            Body b = world.getBody(i);
             Shape shape = b.getShape();
             float bx = b.getX();
             float by = b.getY();
             float bc = b.getCos();
             float bs = b.getSin();
             shape.computeAabb(bx, by, bc, bs, box);
-            boolean still = frozen(world, b);
+            boolean still = !b.isSimulated();
             float bvx = still ? 0f : b.getVelocityX();
             float bvy = still ? 0f : b.getVelocityY();
             float bw = still ? 0f : b.getAngularVelocity();
@@ -219,14 +210,35 @@ final class ObstacleGrid implements QueryCallback {
         }
     }
 
-    /**
-     * Whether a body stands still this tick though it may have a velocity: a dynamic body outside
-     * the world's simulation area (its box, in {@link #box}, does not overlap the area) is frozen.
-     */
-    private boolean frozen(World world, Body b) {
-        return b.isDynamic() && world.hasSimulationArea()
-            && (box[0] > world.getSimulationAreaMaxX() || box[2] < world.getSimulationAreaMinX()
-                || box[1] > world.getSimulationAreaMaxY() || box[3] < world.getSimulationAreaMinY());
+    /** Whether particles bounce off the body: interacting, and a shape they can be tested against. */
+    private static boolean collides(Body b) {
+        int type = b.getShape().getType();
+        return b.isInteracting() && (type == Shape.TYPE_CIRCLE || type == Shape.TYPE_POLYGON || type == Shape.TYPE_MULTI);
+    }
+
+    /** How far a body may have moved this tick: nothing unless the tick simulated it. */
+    private static float reach(Body b, float dt) {
+        return b.isSimulated() ? (Math.abs(b.getVelocityX()) + Math.abs(b.getVelocityY())
+            + Math.abs(b.getAngularVelocity()) * b.getShape().getBoundingRadius()) * dt : 0f;
+    }
+
+    /** Puts the body's current box in {@link #box}. */
+    private void shapeBox(Body b) {
+        b.getShape().computeAabb(b.getX(), b.getY(), b.getCos(), b.getSin(), box);
+    }
+
+    /** Whether a cheap box around the body's motion this tick overlaps the rectangle. */
+    private boolean mayReach(Body b, float dt, float minX, float minY, float maxX, float maxY) {
+        shapeBox(b);
+        float reach = reach(b, dt);
+        return box[0] - reach <= maxX && box[2] + reach >= minX && box[1] - reach <= maxY && box[3] + reach >= minY;
+    }
+
+    /** Collects in {@link #candidates} the bodies whose box overlaps the rectangle, in world order. */
+    private void query(World world, float minX, float minY, float maxX, float maxY) {
+        candidates.count = 0;
+        world.queryBodies(minX, minY, maxX, maxY, candidates);
+        visited += candidates.count;
     }
 
     /** Takes a landscape segment reported by {@link Landscape#querySegments}. */
@@ -423,5 +435,20 @@ final class ObstacleGrid implements QueryCallback {
         maxY = Arrays.copyOf(maxY, n);
         stamp = Arrays.copyOf(stamp, n);
         found = new int[n];
+    }
+
+    /** Collects the body indices a world query reports. */
+    private static final class Candidates implements QueryCallback {
+        int[] index = new int[16];
+        int count;
+
+        @Override
+        public boolean reportProxy(int bodyIndex) {
+            if (count == index.length) {
+                index = Arrays.copyOf(index, 2 * count);
+            }
+            index[count++] = bodyIndex;
+            return true;
+        }
     }
 }

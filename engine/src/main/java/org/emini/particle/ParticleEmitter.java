@@ -34,6 +34,16 @@ import org.emini.math.EMath;
  * angle 0, all deviations 0, elasticity 1, gravity factor 1, damping 0, axes not fixed, both emit
  * points at (0, 0), collisions on.
  *
+ * <p>Supported ranges, checked by every setter (an {@link IllegalArgumentException} names the call
+ * and the value): at most {@link #MAX_PARTICLES} particles; emit points within
+ * ±{@link #MAX_COORDINATE} px; speeds within ±{@link #MAX_SPEED} px/s; rates up to
+ * {@link #MAX_RATE} per second; lifetimes up to {@link #MAX_LIFETIME} s; angles within
+ * ±{@link #MAX_ANGLE} rad; gravity factors within ±{@link #MAX_GRAVITY_FACTOR}; deviations from 0
+ * to the same limits. The pool's arrays grow by doubling as particles need them, up to the maximum,
+ * so a large maximum costs memory only when the particles live; once grown, ticks allocate nothing.
+ * A tick emits at most as many particles as the pool holds, and of a tick longer than the longest
+ * lifetime only its last lifetime emits (earlier births would be dead by its end).
+ *
  * <p>Read the particles for drawing with {@link #getParticleCount()}, {@link #getX(int)},
  * {@link #getY(int)} and {@link #getAge(int)}, or {@link #copyPositions(float[])}; none of them
  * allocates. Particle indices change when particles die (the last one takes the dead one's place).
@@ -52,8 +62,25 @@ public final class ParticleEmitter {
     public static final float DEFAULT_GRAVITY_FACTOR = 1f;
     /** Seed of a new emitter's generator. */
     public static final long DEFAULT_SEED = 0x5DEECE66DL;
+    /** The largest pool (particles): 2²⁰, 32 MiB of particle state. */
+    public static final int MAX_PARTICLES = 1 << 20;
+    /** The largest emit point coordinate, either sign (px): floats are coarser than 1 px beyond 2²⁴. */
+    public static final float MAX_COORDINATE = 1e7f;
+    /** The largest emit speed and speed deviation (px/s). */
+    public static final float MAX_SPEED = 1e6f;
+    /** The largest creation rate and rate deviation (particles/s). */
+    public static final float MAX_RATE = 1e6f;
+    /** The longest lifetime and lifetime deviation (s). */
+    public static final float MAX_LIFETIME = 1e6f;
+    /** The largest emit angle, either sign, and angle deviation (rad). */
+    public static final float MAX_ANGLE = 1e4f;
+    /** The largest gravity factor, either sign. */
+    public static final float MAX_GRAVITY_FACTOR = 1e4f;
+    /** The pool's first size; it doubles up to the maximum as particles need it. */
+    private static final int FIRST_CAPACITY = 16;
 
     private final Body body;
+    private int maxParticles;
     private float rate = DEFAULT_CREATION_RATE;
     private float rateDeviation;
     private float lifetime = DEFAULT_LIFETIME;
@@ -79,7 +106,8 @@ public final class ParticleEmitter {
     /** Fraction of a particle owed by continuous emission, carried from tick to tick. */
     private float owed;
 
-    // The pool: live particles are 0 .. count-1. startX/Y hold where this tick's motion began.
+    // The pool: live particles are 0 .. count-1, in arrays of the same length, at most maxParticles.
+    // startX/Y hold where this tick's motion began.
     int count;
     float[] x;
     float[] y;
@@ -103,7 +131,7 @@ public final class ParticleEmitter {
     /**
      * Creates an emitter fixed in the world.
      *
-     * @param maxParticles the pool size: the most particles alive at once, &gt; 0
+     * @param maxParticles the pool size: the most particles alive at once, 1 to {@link #MAX_PARTICLES}
      */
     public ParticleEmitter(int maxParticles) {
         this(maxParticles, null);
@@ -112,23 +140,40 @@ public final class ParticleEmitter {
     /**
      * Creates an emitter attached to a body, or fixed in the world.
      *
-     * @param maxParticles the pool size: the most particles alive at once, &gt; 0
+     * @param maxParticles the pool size: the most particles alive at once, 1 to {@link #MAX_PARTICLES}
      * @param body the body that carries the emitter, or null for an emitter fixed in the world
      */
     public ParticleEmitter(int maxParticles, Body body) {
         this.body = body;
-        allocate(checkMax("ParticleEmitter(maxParticles, body)", maxParticles));
+        this.maxParticles = checkMax("ParticleEmitter(maxParticles, body)", maxParticles);
+        resize(Math.min(maxParticles, FIRST_CAPACITY));
     }
 
-    private void allocate(int max) {
-        x = new float[max];
-        y = new float[max];
-        vx = new float[max];
-        vy = new float[max];
-        age = new float[max];
-        life = new float[max];
-        startX = new float[max];
-        startY = new float[max];
+    /** Gives the pool's arrays the new length, keeping the live particles that fit. */
+    private void resize(int length) {
+        x = copy(x, length);
+        y = copy(y, length);
+        vx = copy(vx, length);
+        vy = copy(vy, length);
+        age = copy(age, length);
+        life = copy(life, length);
+        startX = copy(startX, length);
+        startY = copy(startY, length);
+    }
+
+    private float[] copy(float[] a, int length) {
+        float[] grown = new float[length];
+        if (a != null) {
+            System.arraycopy(a, 0, grown, 0, Math.min(count, length));
+        }
+        return grown;
+    }
+
+    /** Room for n more particles, growing the arrays by doubling (n must fit under the maximum). */
+    private void ensureRoom(int n) {
+        if (count + n > x.length) {
+            resize((int) Math.min(maxParticles, Math.max(count + (long) n, 2L * x.length)));
+        }
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -149,24 +194,21 @@ public final class ParticleEmitter {
      * @return the maximum particle count
      */
     public int getMaxParticles() {
-        return x.length;
+        return maxParticles;
     }
 
     /**
-     * Changes the pool size (this allocates). When it shrinks below the live count, the particles
-     * with the highest indices are dropped.
+     * Changes the pool size. When it shrinks below the live count, the particles with the highest
+     * indices are dropped (and the arrays shrink, which allocates).
      *
-     * @param maxParticles the new maximum, &gt; 0
+     * @param maxParticles the new maximum, 1 to {@link #MAX_PARTICLES}
      */
     public void setMaxParticles(int maxParticles) {
-        checkMax("ParticleEmitter.setMaxParticles", maxParticles);
-        float[][] old = {x, y, vx, vy, age, life, startX, startY};
-        allocate(maxParticles);
-        float[][] now = {x, y, vx, vy, age, life, startX, startY};
-        count = Math.min(count, maxParticles);
-        firstNew = Math.min(firstNew, count);
-        for (int k = 0; k < old.length; k++) {
-            System.arraycopy(old[k], 0, now[k], 0, count);
+        this.maxParticles = checkMax("ParticleEmitter.setMaxParticles", maxParticles);
+        if (x.length > maxParticles) {
+            count = Math.min(count, maxParticles);
+            firstNew = Math.min(firstNew, count);
+            resize(maxParticles);
         }
     }
 
@@ -193,12 +235,12 @@ public final class ParticleEmitter {
      * (below zero counts as zero); the fraction of a particle left over carries to the next tick,
      * so the long-run mean is exactly the rate.
      *
-     * @param rate particles per second, &ge; 0
-     * @param deviation the full width of the deviation, &ge; 0
+     * @param rate particles per second, 0 to {@link #MAX_RATE}
+     * @param deviation the full width of the deviation, 0 to {@link #MAX_RATE}
      */
     public void setCreationRate(float rate, float deviation) {
-        this.rate = Check.nonNegative("ParticleEmitter.setCreationRate", "rate", rate);
-        rateDeviation = Check.nonNegative("ParticleEmitter.setCreationRate", "deviation", deviation);
+        this.rate = Check.within("ParticleEmitter.setCreationRate", "rate", rate, 0f, MAX_RATE);
+        rateDeviation = Check.within("ParticleEmitter.setCreationRate", "deviation", deviation, 0f, MAX_RATE);
     }
 
     /**
@@ -223,12 +265,13 @@ public final class ParticleEmitter {
      * Sets the lifetime: each particle lives a time drawn from [seconds − deviation/2,
      * seconds + deviation/2] and dies in the tick in which its age reaches it.
      *
-     * @param seconds the mean lifetime (s), &gt; 0
-     * @param deviation the full width of the deviation (s), &ge; 0
+     * @param seconds the mean lifetime (s), &gt; 0 and at most {@link #MAX_LIFETIME}
+     * @param deviation the full width of the deviation (s), 0 to {@link #MAX_LIFETIME}
      */
     public void setLifetime(float seconds, float deviation) {
-        lifetime = Check.positive("ParticleEmitter.setLifetime", "seconds", seconds);
-        lifetimeDeviation = Check.nonNegative("ParticleEmitter.setLifetime", "deviation", deviation);
+        lifetime = Check.within("ParticleEmitter.setLifetime", "seconds", Check.positive("ParticleEmitter.setLifetime",
+            "seconds", seconds), 0f, MAX_LIFETIME);
+        lifetimeDeviation = Check.within("ParticleEmitter.setLifetime", "deviation", deviation, 0f, MAX_LIFETIME);
     }
 
     /**
@@ -253,12 +296,12 @@ public final class ParticleEmitter {
      * Sets the emit speed: each particle leaves at a speed drawn from [speed − deviation/2,
      * speed + deviation/2] relative to its emit point.
      *
-     * @param speed the mean speed (px/s), finite
-     * @param deviation the full width of the deviation (px/s), &ge; 0
+     * @param speed the mean speed (px/s), within ±{@link #MAX_SPEED}
+     * @param deviation the full width of the deviation (px/s), 0 to {@link #MAX_SPEED}
      */
     public void setSpeed(float speed, float deviation) {
-        this.speed = Check.finite("ParticleEmitter.setSpeed", "speed", speed);
-        speedDeviation = Check.nonNegative("ParticleEmitter.setSpeed", "deviation", deviation);
+        this.speed = Check.within("ParticleEmitter.setSpeed", "speed", speed, -MAX_SPEED, MAX_SPEED);
+        speedDeviation = Check.within("ParticleEmitter.setSpeed", "deviation", deviation, 0f, MAX_SPEED);
     }
 
     /**
@@ -283,12 +326,12 @@ public final class ParticleEmitter {
      * Sets the emit direction: each particle leaves at an angle drawn from [radians − deviation/2,
      * radians + deviation/2], plus the body's angle unless the axes are fixed.
      *
-     * @param radians the mean direction; 0 = +x, π/2 = +y (down the screen)
-     * @param deviation the full width of the deviation (rad), &ge; 0
+     * @param radians the mean direction; 0 = +x, π/2 = +y (down the screen); within ±{@link #MAX_ANGLE}
+     * @param deviation the full width of the deviation (rad), 0 to {@link #MAX_ANGLE}
      */
     public void setAngle(float radians, float deviation) {
-        angle = Check.finite("ParticleEmitter.setAngle", "radians", radians);
-        angleDeviation = Check.nonNegative("ParticleEmitter.setAngle", "deviation", deviation);
+        angle = Check.within("ParticleEmitter.setAngle", "radians", radians, -MAX_ANGLE, MAX_ANGLE);
+        angleDeviation = Check.within("ParticleEmitter.setAngle", "deviation", deviation, 0f, MAX_ANGLE);
         angleCos = EMath.cos(radians);
         angleSin = EMath.sin(radians);
     }
@@ -296,8 +339,8 @@ public final class ParticleEmitter {
     /**
      * Emits from one point (both emit points set to it).
      *
-     * @param x world x, or body-local x on a body (px)
-     * @param y world y, or body-local y on a body (px)
+     * @param x world x, or body-local x on a body (px), within ±{@link #MAX_COORDINATE}
+     * @param y world y, or body-local y on a body (px), within ±{@link #MAX_COORDINATE}
      */
     public void setEmitPoint(float x, float y) {
         setEmitSegment(x, y, x, y);
@@ -306,16 +349,17 @@ public final class ParticleEmitter {
     /**
      * Emits from uniformly random points of the segment between two points.
      *
-     * @param x1 the first point's x: world, or body-local on a body (px)
-     * @param y1 the first point's y (px)
-     * @param x2 the second point's x (px)
-     * @param y2 the second point's y (px)
+     * @param x1 the first point's x: world, or body-local on a body (px), within ±{@link #MAX_COORDINATE}
+     * @param y1 the first point's y (px), within ±{@link #MAX_COORDINATE}
+     * @param x2 the second point's x (px), within ±{@link #MAX_COORDINATE}
+     * @param y2 the second point's y (px), within ±{@link #MAX_COORDINATE}
      */
     public void setEmitSegment(float x1, float y1, float x2, float y2) {
-        emitX1 = Check.finite("ParticleEmitter.setEmitSegment", "x1", x1);
-        emitY1 = Check.finite("ParticleEmitter.setEmitSegment", "y1", y1);
-        emitX2 = Check.finite("ParticleEmitter.setEmitSegment", "x2", x2);
-        emitY2 = Check.finite("ParticleEmitter.setEmitSegment", "y2", y2);
+        String where = "ParticleEmitter.setEmitSegment";
+        emitX1 = Check.within(where, "x1", x1, -MAX_COORDINATE, MAX_COORDINATE);
+        emitY1 = Check.within(where, "y1", y1, -MAX_COORDINATE, MAX_COORDINATE);
+        emitX2 = Check.within(where, "x2", x2, -MAX_COORDINATE, MAX_COORDINATE);
+        emitY2 = Check.within(where, "y2", y2, -MAX_COORDINATE, MAX_COORDINATE);
     }
 
     /**
@@ -424,10 +468,11 @@ public final class ParticleEmitter {
      * Sets the multiplier on the world's gravity: 0 for weightless sparks, negative for smoke that
      * rises.
      *
-     * @param factor the factor, finite
+     * @param factor the factor, within ±{@link #MAX_GRAVITY_FACTOR}
      */
     public void setGravityFactor(float factor) {
-        gravityFactor = Check.finite("ParticleEmitter.setGravityFactor", "factor", factor);
+        gravityFactor = Check.within("ParticleEmitter.setGravityFactor", "factor", factor, -MAX_GRAVITY_FACTOR,
+            MAX_GRAVITY_FACTOR);
     }
 
     /**
@@ -483,7 +528,8 @@ public final class ParticleEmitter {
         if (particles < 0) {
             throw new IllegalArgumentException("ParticleEmitter.emit: particles must be >= 0, was " + particles);
         }
-        int n = Math.min(particles, x.length - count);
+        int n = Math.min(particles, maxParticles - count);
+        ensureRoom(n);
         for (int k = 0; k < n; k++) {
             float l = drawLifetime();
             spawn(0f, l, 0f, 0f);
@@ -586,7 +632,7 @@ public final class ParticleEmitter {
 
     @Override
     public String toString() {
-        return "ParticleEmitter[" + count + " of " + x.length + " particles" + (body == null ? ", fixed" : ", on " + body) + "]";
+        return "ParticleEmitter[" + count + " of " + maxParticles + " particles" + (body == null ? ", fixed" : ", on " + body) + "]";
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -600,6 +646,10 @@ public final class ParticleEmitter {
     void advance(float dt, float gravityX, float gravityY) {
         float gx = gravityX * gravityFactor;
         float gy = gravityY * gravityFactor;
+        if (!EMath.isFinite(gx) || !EMath.isFinite(gy)) {
+            throw new IllegalStateException("ParticleEmitter: the world's gravity (" + gravityX + ", " + gravityY
+                + ") times the gravity factor " + gravityFactor + " is beyond the float range");
+        }
         float halfDt2 = 0.5f * dt * dt;
         minX = Float.POSITIVE_INFINITY;
         minY = Float.POSITIVE_INFINITY;
@@ -669,7 +719,9 @@ public final class ParticleEmitter {
     /**
      * Emits the particles the rate owes this tick. Emission is continuous: birth k happens when
      * owed + rate·t reaches k, so each new particle has already lived and moved for the rest of the
-     * tick.
+     * tick. Of a tick longer than the longest lifetime only the last lifetime emits (the earlier
+     * births are dead by its end), and at most a pool's worth of births is looked at, so a huge
+     * timestep or rate costs no more than filling the pool.
      */
     private void emitContinuously(float dt, float gx, float gy) {
         float r = rate;
@@ -679,13 +731,15 @@ public final class ParticleEmitter {
         if (!(r > 0f)) {
             return;
         }
+        float span = Math.min(dt, lifetime + 0.5f * lifetimeDeviation);
         float before = owed;
-        float total = before + r * dt;
+        float total = before + r * span;
         int births = (int) total;
-        owed = total - births;
+        // Beyond 2^24 a float has no fraction left to carry (and the int cast saturates).
+        owed = total < 0x1p24f ? total - births : 0f;
         float step = 1f / r;
-        for (int k = 1; k <= births && count < x.length; k++) {
-            float a = Math.max(0f, dt - (k - before) * step);
+        for (int k = 1; k <= births && k <= maxParticles && count < maxParticles; k++) {
+            float a = Math.max(0f, span - (k - before) * step);
             float l = drawLifetime();
             if (l <= a) {
                 // Born and dead within this tick: it counts, but is never seen.
@@ -705,6 +759,7 @@ public final class ParticleEmitter {
      * emit point's own motion since then is the part of its velocity it shares with the body).
      */
     private void spawn(float a, float l, float gx, float gy) {
+        ensureRoom(1);
         float lx = emitX1;
         float ly = emitY1;
         if (emitX1 != emitX2 || emitY1 != emitY2) {
@@ -777,8 +832,8 @@ public final class ParticleEmitter {
     }
 
     private static int checkMax(String where, int max) {
-        if (max <= 0) {
-            throw new IllegalArgumentException(where + ": maxParticles must be > 0, was " + max);
+        if (max <= 0 || max > MAX_PARTICLES) {
+            throw new IllegalArgumentException(where + ": maxParticles must be in 1.." + MAX_PARTICLES + ", was " + max);
         }
         return max;
     }

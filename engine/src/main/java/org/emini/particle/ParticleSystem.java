@@ -26,7 +26,7 @@ import org.emini.math.EMath;
 public final class ParticleSystem {
     private ParticleEmitter[] emitters = new ParticleEmitter[4];
     private int emitterCount;
-    private final ObstacleGrid grid = new ObstacleGrid();
+    final ObstacleGrid grid = new ObstacleGrid();
     private final ParticleCollider collider = new ParticleCollider(grid);
 
     /** Creates an empty particle system. */

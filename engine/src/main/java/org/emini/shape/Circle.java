@@ -14,8 +14,8 @@ public final class Circle extends Shape {
     /**
      * Creates a circle centred on the local origin.
      *
-     * @param radius the radius (px), finite and &gt; 0
-     * @throws InvalidShapeException if the radius is not finite or not positive
+     * @param radius the radius (px), finite and at least {@link Shape#MIN_SIZE} / 2
+     * @throws InvalidShapeException if the radius is not finite, not positive or too small
      */
     public Circle(float radius) {
         this(radius, 0f, 0f);
@@ -25,10 +25,11 @@ public final class Circle extends Shape {
      * Creates a circle whose centre is offset from the local origin. Its inertia about the origin
      * is m·r²/2 + m·|centre|².
      *
-     * @param radius the radius (px), finite and &gt; 0
+     * @param radius the radius (px), finite and at least {@link Shape#MIN_SIZE} / 2
      * @param centerX the centre's local x (px), finite
      * @param centerY the centre's local y (px), finite
-     * @throws InvalidShapeException if a value is not finite or the radius is not positive
+     * @throws InvalidShapeException if a value is not finite or the radius is not positive or too
+     *     small
      */
     public Circle(float radius, float centerX, float centerY) {
         super(validated(radius, centerX, centerY));
@@ -46,6 +47,11 @@ public final class Circle extends Shape {
         if (!(radius > 0f)) {
             throw new InvalidShapeException(InvalidShapeException.Rule.DEGENERATE, -1,
                     "Circle: rule DEGENERATE: radius must be > 0, got " + radius);
+        }
+        if (2f * radius < MIN_SIZE) {
+            throw new InvalidShapeException(InvalidShapeException.Rule.TOO_SMALL, -1,
+                    "Circle: rule TOO_SMALL: radius " + radius + " px makes a diameter below Shape.MIN_SIZE ("
+                            + MIN_SIZE + " px)");
         }
         return ShapeGeometry.ofCircle(radius, centerX, centerY);
     }

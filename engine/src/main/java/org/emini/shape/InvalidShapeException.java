@@ -18,6 +18,8 @@ public final class InvalidShapeException extends IllegalArgumentException {
         TOO_MANY_VERTICES,
         /** Zero size: all vertices on one line, zero area, or a radius that is not positive. */
         DEGENERATE,
+        /** Narrower than {@link Shape#MIN_SIZE} somewhere: too small to collide reliably. */
+        TOO_SMALL,
         /** The outline turns both ways: it has a recess. */
         NOT_CONVEX,
         /** The outline crosses or doubles back on itself (for example a pentagram). */

@@ -8,7 +8,7 @@ import org.emini.shape.InvalidShapeException.Rule;
  *
  * <p>Steps, in order: all coordinates finite; near-duplicate consecutive vertices merged;
  * at least three distinct vertices; not all on one line; collinear vertices removed; convex;
- * simple; at most {@link Shape#MAX_VERTICES} vertices. Lengths are compared with
+ * simple; at most {@link Shape#MAX_VERTICES} vertices; at least {@link Shape#MIN_SIZE} across. Lengths are compared with
  * {@link Polygon#RELATIVE_TOLERANCE} × size, size being the larger side of the input's bounding
  * box, so the result does not depend on the unit of length.
  */
@@ -126,6 +126,11 @@ final class PolygonCleaner {
                     "is one too many: " + m + " vertices remain after cleaning, at most "
                             + Shape.MAX_VERTICES + " allowed");
         }
+        float width = narrowestWidth(px, py, m);
+        if (width < Shape.MIN_SIZE) {
+            throw new InvalidShapeException(Rule.TOO_SMALL, -1, "Polygon: rule " + Rule.TOO_SMALL + ": it is "
+                    + width + " px across at its narrowest, below Shape.MIN_SIZE (" + Shape.MIN_SIZE + " px)");
+        }
         if (negative > 0) {
             reverse(px, py, index, m);
         }
@@ -136,6 +141,25 @@ final class PolygonCleaner {
             out[2 * i + 1] = py[i];
         }
         return out;
+    }
+
+    /**
+     * The width of a convex polygon where it is narrowest: the least, over its edges, of the
+     * farthest vertex's distance from the edge's line (the narrowest direction is an edge normal).
+     */
+    private static float narrowestWidth(float[] px, float[] py, int m) {
+        float narrowest = Float.MAX_VALUE;
+        for (int i = 0; i < m; i++) {
+            int k = i + 1 == m ? 0 : i + 1;
+            float ex = px[k] - px[i];
+            float ey = py[k] - py[i];
+            float far = 0f;
+            for (int j = 0; j < m; j++) {
+                far = Math.max(far, Math.abs(ex * (py[j] - py[i]) - ey * (px[j] - px[i])));
+            }
+            narrowest = Math.min(narrowest, far / EMath.sqrt(ex * ex + ey * ey));
+        }
+        return narrowest;
     }
 
     /** Refuses a vertex set that lies within tol of one line (no area). */

@@ -69,6 +69,29 @@ class BroadPhaseTest {
     }
 
     @Test
+    void aNewMarginRefattensEveryBoxAndReportsThePairsItBrings() {
+        BroadPhase bp = new BroadPhase(2f);
+        // 100 boxes of 10 px in a row, 20 px apart: margins of 2 keep them apart, 6 make neighbours pairs.
+        for (int i = 0; i < 100; i++) {
+            bp.createProxy(20f * i, 0f, 20f * i + 10f, 10f, i, i % 2 == 0);
+        }
+        assertTrue(update(bp).isEmpty());
+        bp.setMargin(6f);
+        assertEquals(6f, bp.getMargin());
+        assertEquals(100, bp.getMoveCount());
+        for (int i = 0; i < 100; i++) {
+            assertEquals(20f * i - 6f, bp.getFatMinX(i));
+            assertEquals(16f, bp.getFatMaxY(i));
+        }
+        assertEquals(99, update(bp).size());
+        bp.setMargin(0f);
+        assertEquals(20f * 7, bp.getFatMinX(7));
+        assertTrue(update(bp).isEmpty());
+        assertThrows(IllegalArgumentException.class, () -> bp.setMargin(Float.NaN));
+        assertThrows(IllegalArgumentException.class, () -> bp.setMargin(-1f));
+    }
+
+    @Test
     void emptyBroadPhase() {
         BroadPhase bp = new BroadPhase(2f);
         bp.validate();

@@ -186,9 +186,9 @@ class PolygonValidationTest {
 
     @Test
     void toleranceScalesWithPolygonSize() {
-        // The same shapes scaled down by 1e6 clean the same way.
-        Polygon p = new Polygon(0f, 0f, 5e-6f, 0f, 1e-5f, 0f, 1e-5f, 1e-5f, 0f, 1e-5f);
+        // The same shapes scaled up by 1e4 clean the same way (scaled down they are too small).
+        Polygon p = new Polygon(0f, 0f, 5e4f, 0f, 1e5f, 0f, 1e5f, 1e5f, 0f, 1e5f);
         assertEquals(4, p.getVertexCount());
-        refused(Rule.NOT_CONVEX, 0f, 0f, 1e-5f, 5e-6f, 4e-6f, 5e-6f, 1e-5f, 1e-5f);
+        refused(Rule.NOT_CONVEX, 0f, 0f, 1e5f, 5e4f, 4e4f, 5e4f, 1e5f, 1e5f);
     }
 }
