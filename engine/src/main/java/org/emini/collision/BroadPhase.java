@@ -18,18 +18,17 @@ import org.emini.math.EMath;
  * along the expected displacement. As long as a shape's tight AABB stays inside its fat AABB,
  * {@link #moveProxy} does nothing, so resting and slowly moving bodies never touch the tree.
  *
- * <p>Leaves are inserted by the surface-area heuristic (in 2D, the perimeter) and the tree is kept
- * balanced by AVL-like rotations on the way back up from every insertion and removal, so its
- * height stays O(log n) even for sorted insertion orders.
+ * <p>Each tree is a DynamicTree (this package): leaves inserted by the surface-area heuristic and kept
+ * balanced by rotations, so its height stays O(log n) even for sorted insertion orders. This class
+ * adds what makes them a broadphase: proxies and their fat boxes, the move buffer and the pairs.
  *
  * <p>Proxy ids are small non-negative ints, dense in {@code [0, peak proxy count)}; freed ids are
  * reused last-freed first. Everything is deterministic: the same sequence of calls gives the same
  * ids, the same tree and the same pairs in the same order.
  *
  * <p>Storage is a set of growable primitive arrays that double when full, so once they have grown
- * to the size of the scene nothing is allocated. Queries walk the tree with an explicit stack kept
- * as a field. The class is not thread-safe, and it must not be modified from inside its callbacks
- * (doing so throws {@link IllegalStateException}).
+ * to the size of the scene nothing is allocated. The class is not thread-safe, and it must not be
+ * modified from inside its callbacks (doing so throws {@link IllegalStateException}).
  */
 public final class BroadPhase {
     /**
@@ -52,26 +51,11 @@ public final class BroadPhase {
 
     private float margin;
 
-    // Tree nodes, as parallel arrays indexed by node id. Leaves have height 0, free nodes -1.
-    private float[] nodeMinX;
-    private float[] nodeMinY;
-    private float[] nodeMaxX;
-    private float[] nodeMaxY;
-    /** Parent of a live node; next free node of a free one. */
-    private int[] nodeParent;
-    private int[] nodeChild1;
-    private int[] nodeChild2;
-    private int[] nodeHeight;
-    /** Proxy id of a leaf, NULL for internal and free nodes. */
-    private int[] nodeProxy;
-    private int nodeHighWater;
-    private int nodeCount;
-    private int freeNodeHead = NULL;
-    /** The roots of the two trees, indexed by {@link #STATIC_TREE} and {@link #DYNAMIC_TREE}. */
-    private final int[] roots = {NULL, NULL};
+    /** The two trees, indexed by {@link #STATIC_TREE} and {@link #DYNAMIC_TREE}; leaves hold proxy ids. */
+    private final DynamicTree[] trees = {new DynamicTree(), new DynamicTree()};
 
     // Proxies, indexed by proxy id. Kept apart from node ids so that proxy ids stay dense.
-    /** Leaf node of a live proxy, NULL for a free id. */
+    /** Leaf node of a live proxy in its tree, NULL for a free id. */
     private int[] proxyNode;
     private int[] proxyUserData;
     /** The tree a live proxy is in: {@link #STATIC_TREE} or {@link #DYNAMIC_TREE}. */
@@ -93,9 +77,8 @@ public final class BroadPhase {
     private int pairLimit = Integer.MAX_VALUE;
     private boolean pairLimitReached;
 
-    /** Query stack; queries may nest, each one using the entries above those of its caller. */
-    private int[] stack;
-    private int stackTop;
+    /** Collects one moved proxy's pairs from a tree. */
+    private final PairCollector collector = new PairCollector();
 
     /** Number of callbacks currently running; the broadphase is read-only while it is positive. */
     private int lockDepth;
@@ -113,15 +96,6 @@ public final class BroadPhase {
                     "BroadPhase: margin (" + margin + ") must be finite and >= 0");
         }
         this.margin = margin;
-        nodeMinX = new float[INITIAL_CAPACITY];
-        nodeMinY = new float[INITIAL_CAPACITY];
-        nodeMaxX = new float[INITIAL_CAPACITY];
-        nodeMaxY = new float[INITIAL_CAPACITY];
-        nodeParent = new int[INITIAL_CAPACITY];
-        nodeChild1 = new int[INITIAL_CAPACITY];
-        nodeChild2 = new int[INITIAL_CAPACITY];
-        nodeHeight = new int[INITIAL_CAPACITY];
-        nodeProxy = new int[INITIAL_CAPACITY];
         proxyNode = new int[INITIAL_CAPACITY];
         proxyUserData = new int[INITIAL_CAPACITY];
         proxyTree = new byte[INITIAL_CAPACITY];
@@ -129,7 +103,6 @@ public final class BroadPhase {
         proxyMoveIndex = new int[INITIAL_CAPACITY];
         moveBuffer = new int[INITIAL_CAPACITY];
         pairBuffer = new long[INITIAL_CAPACITY];
-        stack = new int[INITIAL_CAPACITY];
     }
 
     /**
@@ -165,25 +138,12 @@ public final class BroadPhase {
         for (int proxyId = 0; proxyId < proxyHighWater; proxyId++) {
             int leaf = proxyNode[proxyId];
             if (leaf != NULL) {
-                nodeMinX[leaf] -= grow;
-                nodeMinY[leaf] -= grow;
-                nodeMaxX[leaf] += grow;
-                nodeMaxY[leaf] += grow;
+                trees[proxyTree[proxyId]].inflate(leaf, grow);
                 bufferMove(proxyId);
             }
         }
-        // Internal boxes from the leaves up, one height at a time.
-        int top = 0;
-        for (int node = 0; node < nodeHighWater; node++) {
-            top = Math.max(top, nodeHeight[node]);
-        }
-        for (int height = 1; height <= top; height++) {
-            for (int node = 0; node < nodeHighWater; node++) {
-                if (nodeHeight[node] == height) {
-                    refit(node);
-                }
-            }
-        }
+        trees[STATIC_TREE].refitAll();
+        trees[DYNAMIC_TREE].refitAll();
     }
 
     /**
@@ -258,21 +218,11 @@ public final class BroadPhase {
         checkUnlocked("createProxy");
         checkBox("createProxy", minX, minY, maxX, maxY);
         int proxyId = allocateProxy();
-        int leaf = allocateNode();
-        nodeMinX[leaf] = minX - margin;
-        nodeMinY[leaf] = minY - margin;
-        nodeMaxX[leaf] = maxX + margin;
-        nodeMaxY[leaf] = maxY + margin;
-        nodeChild1[leaf] = NULL;
-        nodeChild2[leaf] = NULL;
-        nodeHeight[leaf] = 0;
-        nodeProxy[leaf] = proxyId;
-        proxyNode[proxyId] = leaf;
+        int tree = isStatic ? STATIC_TREE : DYNAMIC_TREE;
+        proxyNode[proxyId] = trees[tree].insert(minX - margin, minY - margin, maxX + margin, maxY + margin, proxyId);
         proxyUserData[proxyId] = userData;
         proxyMoveIndex[proxyId] = NULL;
-        int tree = isStatic ? STATIC_TREE : DYNAMIC_TREE;
         proxyTree[proxyId] = (byte) tree;
-        insertLeaf(leaf, tree);
         bufferMove(proxyId);
         return proxyId;
     }
@@ -289,9 +239,7 @@ public final class BroadPhase {
         checkUnlocked("destroyProxy");
         checkProxy("destroyProxy", proxyId);
         unbufferMove(proxyId);
-        int leaf = proxyNode[proxyId];
-        removeLeaf(leaf, proxyTree[proxyId]);
-        releaseNode(leaf);
+        trees[proxyTree[proxyId]].remove(proxyNode[proxyId]);
         proxyNode[proxyId] = NULL;
         proxyNextFree[proxyId] = freeProxyHead;
         freeProxyHead = proxyId;
@@ -333,6 +281,7 @@ public final class BroadPhase {
         checkFinite("moveProxy", "dx", dx);
         checkFinite("moveProxy", "dy", dy);
         int leaf = proxyNode[proxyId];
+        DynamicTree tree = trees[proxyTree[proxyId]];
 
         float fatMinX = minX - margin;
         float fatMinY = minY - margin;
@@ -351,10 +300,10 @@ public final class BroadPhase {
             fatMaxY += ey;
         }
 
-        float oldMinX = nodeMinX[leaf];
-        float oldMinY = nodeMinY[leaf];
-        float oldMaxX = nodeMaxX[leaf];
-        float oldMaxY = nodeMaxY[leaf];
+        float oldMinX = tree.minX(leaf);
+        float oldMinY = tree.minY(leaf);
+        float oldMaxX = tree.maxX(leaf);
+        float oldMaxY = tree.maxY(leaf);
         // The old box must hold the tight box swept by the coming displacement, or a body that was
         // set moving fast inside its box would cross others unseen (no pair, no speculative contact).
         float sweptMinX = dx < 0f ? minX + dx : minX;
@@ -372,13 +321,7 @@ public final class BroadPhase {
             }
         }
 
-        int tree = proxyTree[proxyId];
-        removeLeaf(leaf, tree);
-        nodeMinX[leaf] = fatMinX;
-        nodeMinY[leaf] = fatMinY;
-        nodeMaxX[leaf] = fatMaxX;
-        nodeMaxY[leaf] = fatMaxY;
-        insertLeaf(leaf, tree);
+        tree.move(leaf, fatMinX, fatMinY, fatMaxX, fatMaxY);
         bufferMove(proxyId);
         return true;
     }
@@ -399,10 +342,15 @@ public final class BroadPhase {
         if (proxyTree[proxyId] == tree) {
             return;
         }
+        DynamicTree from = trees[proxyTree[proxyId]];
         int leaf = proxyNode[proxyId];
-        removeLeaf(leaf, proxyTree[proxyId]);
+        float minX = from.minX(leaf);
+        float minY = from.minY(leaf);
+        float maxX = from.maxX(leaf);
+        float maxY = from.maxY(leaf);
+        from.remove(leaf);
+        proxyNode[proxyId] = trees[tree].insert(minX, minY, maxX, maxY, proxyId);
         proxyTree[proxyId] = (byte) tree;
-        insertLeaf(leaf, tree);
         bufferMove(proxyId);
     }
 
@@ -443,10 +391,12 @@ public final class BroadPhase {
     public boolean testOverlap(int proxyA, int proxyB) {
         checkProxy("testOverlap", proxyA);
         checkProxy("testOverlap", proxyB);
+        DynamicTree ta = trees[proxyTree[proxyA]];
+        DynamicTree tb = trees[proxyTree[proxyB]];
         int a = proxyNode[proxyA];
         int b = proxyNode[proxyB];
-        return nodeMinX[a] <= nodeMaxX[b] && nodeMinX[b] <= nodeMaxX[a]
-                && nodeMinY[a] <= nodeMaxY[b] && nodeMinY[b] <= nodeMaxY[a];
+        return ta.minX(a) <= tb.maxX(b) && tb.minX(b) <= ta.maxX(a)
+                && ta.minY(a) <= tb.maxY(b) && tb.minY(b) <= ta.maxY(a);
     }
 
     // ------------------------------------------------------------------------------------------
@@ -506,33 +456,26 @@ public final class BroadPhase {
     }
 
     private void collectPairs(int queryProxy, int tree) {
-        int queryNode = proxyNode[queryProxy];
-        float minX = nodeMinX[queryNode];
-        float minY = nodeMinY[queryNode];
-        float maxX = nodeMaxX[queryNode];
-        float maxY = nodeMaxY[queryNode];
-        int base = stackTop;
-        push(roots[tree]);
-        while (stackTop > base) {
-            int node = stack[--stackTop];
-            if (nodeMinX[node] > maxX || minX > nodeMaxX[node]
-                    || nodeMinY[node] > maxY || minY > nodeMaxY[node]) {
-                continue;
-            }
-            if (nodeHeight[node] > 0) {
-                push(nodeChild1[node]);
-                push(nodeChild2[node]);
-                continue;
-            }
-            int other = nodeProxy[node];
+        DynamicTree own = trees[proxyTree[queryProxy]];
+        int leaf = proxyNode[queryProxy];
+        collector.queryProxy = queryProxy;
+        if (!trees[tree].query(own.minX(leaf), own.minY(leaf), own.maxX(leaf), own.maxY(leaf), collector)) {
+            pairLimitReached = true;
+        }
+    }
+
+    /** Buffers the pairs of one moved proxy; stops the query at the pair limit. */
+    private final class PairCollector implements QueryCallback {
+        int queryProxy;
+
+        @Override
+        public boolean reportProxy(int other) {
             // When both moved, the pair is reported while querying the smaller id only.
             if (other == queryProxy || (other < queryProxy && proxyMoveIndex[other] != NULL)) {
-                continue;
+                return true;
             }
             if (pairCount == pairLimit) {
-                pairLimitReached = true;
-                stackTop = base;
-                return;
+                return false;
             }
             if (pairCount == pairBuffer.length) {
                 pairBuffer = Arrays.copyOf(pairBuffer, (int) Math.min(pairLimit, 2L * pairCount));
@@ -540,6 +483,7 @@ public final class BroadPhase {
             pairBuffer[pairCount++] = other < queryProxy
                     ? ((long) other << 32) | queryProxy
                     : ((long) queryProxy << 32) | other;
+            return true;
         }
     }
 
@@ -606,42 +550,12 @@ public final class BroadPhase {
     /** Queries one tree; returns false if the callback stopped the query. */
     private boolean queryTree(
             int tree, float minX, float minY, float maxX, float maxY, QueryCallback callback) {
-        if (roots[tree] == NULL) {
-            return true;
-        }
-        int base = stackTop;
         lockDepth++;
         try {
-            push(roots[tree]);
-            while (stackTop > base) {
-                int node = stack[--stackTop];
-                if (nodeMinX[node] > maxX || minX > nodeMaxX[node]
-                        || nodeMinY[node] > maxY || minY > nodeMaxY[node]) {
-                    continue;
-                }
-                if (nodeHeight[node] > 0) {
-                    push(nodeChild1[node]);
-                    push(nodeChild2[node]);
-                } else if (!callback.reportProxy(nodeProxy[node])) {
-                    return false;
-                }
-            }
+            return trees[tree].query(minX, minY, maxX, maxY, callback);
         } finally {
-            stackTop = base;
             lockDepth--;
         }
-        return true;
-    }
-
-    /** Pushes a node on the query stack; the empty tree's NULL root is not pushed. */
-    private void push(int node) {
-        if (node == NULL) {
-            return;
-        }
-        if (stackTop == stack.length) {
-            stack = Arrays.copyOf(stack, stackTop * 2);
-        }
-        stack[stackTop++] = node;
     }
 
     // ------------------------------------------------------------------------------------------
@@ -668,7 +582,7 @@ public final class BroadPhase {
      */
     public float getFatMinX(int proxyId) {
         checkProxy("getFatMinX", proxyId);
-        return nodeMinX[proxyNode[proxyId]];
+        return trees[proxyTree[proxyId]].minX(proxyNode[proxyId]);
     }
 
     /**
@@ -680,7 +594,7 @@ public final class BroadPhase {
      */
     public float getFatMinY(int proxyId) {
         checkProxy("getFatMinY", proxyId);
-        return nodeMinY[proxyNode[proxyId]];
+        return trees[proxyTree[proxyId]].minY(proxyNode[proxyId]);
     }
 
     /**
@@ -692,7 +606,7 @@ public final class BroadPhase {
      */
     public float getFatMaxX(int proxyId) {
         checkProxy("getFatMaxX", proxyId);
-        return nodeMaxX[proxyNode[proxyId]];
+        return trees[proxyTree[proxyId]].maxX(proxyNode[proxyId]);
     }
 
     /**
@@ -704,7 +618,7 @@ public final class BroadPhase {
      */
     public float getFatMaxY(int proxyId) {
         checkProxy("getFatMaxY", proxyId);
-        return nodeMaxY[proxyNode[proxyId]];
+        return trees[proxyTree[proxyId]].maxY(proxyNode[proxyId]);
     }
 
     /**
@@ -736,11 +650,7 @@ public final class BroadPhase {
      * @return the tree height
      */
     public int getTreeHeight() {
-        return Math.max(treeHeight(STATIC_TREE), treeHeight(DYNAMIC_TREE));
-    }
-
-    private int treeHeight(int tree) {
-        return roots[tree] == NULL ? 0 : nodeHeight[roots[tree]];
+        return Math.max(trees[STATIC_TREE].height(), trees[DYNAMIC_TREE].height());
     }
 
     /**
@@ -766,240 +676,8 @@ public final class BroadPhase {
         checkUnlocked("shiftOrigin");
         checkFinite("shiftOrigin", "dx", dx);
         checkFinite("shiftOrigin", "dy", dy);
-        // Rounding is monotonic, so every internal box still encloses (and equals the union of)
-        // its shifted children.
-        for (int i = 0; i < nodeHighWater; i++) {
-            if (nodeHeight[i] >= 0) {
-                nodeMinX[i] -= dx;
-                nodeMinY[i] -= dy;
-                nodeMaxX[i] -= dx;
-                nodeMaxY[i] -= dy;
-            }
-        }
-    }
-
-    // ------------------------------------------------------------------------------------------
-    // Tree
-
-    private int allocateNode() {
-        int node;
-        if (freeNodeHead != NULL) {
-            node = freeNodeHead;
-            freeNodeHead = nodeParent[node];
-        } else {
-            if (nodeHighWater == nodeHeight.length) {
-                growNodes();
-            }
-            node = nodeHighWater++;
-        }
-        nodeParent[node] = NULL;
-        nodeChild1[node] = NULL;
-        nodeChild2[node] = NULL;
-        nodeHeight[node] = 0;
-        nodeProxy[node] = NULL;
-        nodeCount++;
-        return node;
-    }
-
-    private void releaseNode(int node) {
-        nodeParent[node] = freeNodeHead;
-        nodeChild1[node] = NULL;
-        nodeChild2[node] = NULL;
-        nodeHeight[node] = -1;
-        nodeProxy[node] = NULL;
-        freeNodeHead = node;
-        nodeCount--;
-    }
-
-    private void growNodes() {
-        int capacity = nodeHeight.length * 2;
-        nodeMinX = Arrays.copyOf(nodeMinX, capacity);
-        nodeMinY = Arrays.copyOf(nodeMinY, capacity);
-        nodeMaxX = Arrays.copyOf(nodeMaxX, capacity);
-        nodeMaxY = Arrays.copyOf(nodeMaxY, capacity);
-        nodeParent = Arrays.copyOf(nodeParent, capacity);
-        nodeChild1 = Arrays.copyOf(nodeChild1, capacity);
-        nodeChild2 = Arrays.copyOf(nodeChild2, capacity);
-        nodeHeight = Arrays.copyOf(nodeHeight, capacity);
-        nodeProxy = Arrays.copyOf(nodeProxy, capacity);
-    }
-
-    /**
-     * Inserts a leaf whose box is set. The sibling is found by descending from the root towards
-     * the child whose perimeter grows least, stopping where pairing up with the current node is
-     * cheaper than any descent (the surface-area heuristic, with perimeter as area in 2D).
-     */
-    private void insertLeaf(int leaf, int tree) {
-        if (roots[tree] == NULL) {
-            roots[tree] = leaf;
-            nodeParent[leaf] = NULL;
-            return;
-        }
-        float minX = nodeMinX[leaf];
-        float minY = nodeMinY[leaf];
-        float maxX = nodeMaxX[leaf];
-        float maxY = nodeMaxY[leaf];
-
-        int index = roots[tree];
-        while (nodeHeight[index] > 0) {
-            int child1 = nodeChild1[index];
-            int child2 = nodeChild2[index];
-            float combined = unionPerimeter(index, minX, minY, maxX, maxY);
-            // Cost of a new parent for this node and the leaf.
-            float cost = 2f * combined;
-            // Every ancestor below here also grows by this much.
-            float inheritance = 2f * (combined - perimeter(index));
-            float cost1 = descentCost(child1, minX, minY, maxX, maxY) + inheritance;
-            float cost2 = descentCost(child2, minX, minY, maxX, maxY) + inheritance;
-            if (cost < cost1 && cost < cost2) {
-                break;
-            }
-            index = cost1 < cost2 ? child1 : child2;
-        }
-
-        int sibling = index;
-        int oldParent = nodeParent[sibling];
-        int newParent = allocateNode();
-        nodeParent[newParent] = oldParent;
-        nodeChild1[newParent] = sibling;
-        nodeChild2[newParent] = leaf;
-        nodeParent[sibling] = newParent;
-        nodeParent[leaf] = newParent;
-        if (oldParent == NULL) {
-            roots[tree] = newParent;
-        } else if (nodeChild1[oldParent] == sibling) {
-            nodeChild1[oldParent] = newParent;
-        } else {
-            nodeChild2[oldParent] = newParent;
-        }
-        refitUpwards(newParent, tree);
-    }
-
-    /** Detaches a leaf from its tree (the leaf node itself stays allocated). */
-    private void removeLeaf(int leaf, int tree) {
-        if (leaf == roots[tree]) {
-            roots[tree] = NULL;
-            return;
-        }
-        int parent = nodeParent[leaf];
-        int grandParent = nodeParent[parent];
-        int sibling = nodeChild1[parent] == leaf ? nodeChild2[parent] : nodeChild1[parent];
-        nodeParent[leaf] = NULL;
-        releaseNode(parent);
-        nodeParent[sibling] = grandParent;
-        if (grandParent == NULL) {
-            roots[tree] = sibling;
-            return;
-        }
-        if (nodeChild1[grandParent] == parent) {
-            nodeChild1[grandParent] = sibling;
-        } else {
-            nodeChild2[grandParent] = sibling;
-        }
-        refitUpwards(grandParent, tree);
-    }
-
-    /** Rebalances and refits every node from {@code index} up to the root of its tree. */
-    private void refitUpwards(int index, int tree) {
-        while (index != NULL) {
-            index = balance(index, tree);
-            refit(index);
-            index = nodeParent[index];
-        }
-    }
-
-    /** Recomputes an internal node's box and height from its children. */
-    private void refit(int node) {
-        int c1 = nodeChild1[node];
-        int c2 = nodeChild2[node];
-        nodeMinX[node] = min(nodeMinX[c1], nodeMinX[c2]);
-        nodeMinY[node] = min(nodeMinY[c1], nodeMinY[c2]);
-        nodeMaxX[node] = max(nodeMaxX[c1], nodeMaxX[c2]);
-        nodeMaxY[node] = max(nodeMaxY[c1], nodeMaxY[c2]);
-        nodeHeight[node] = 1 + Math.max(nodeHeight[c1], nodeHeight[c2]);
-    }
-
-    /**
-     * If the children's heights of {@code a} differ by more than one, rotates the taller child up
-     * into a's place and returns it; otherwise returns a. The children of a must be up to date.
-     */
-    private int balance(int a, int tree) {
-        // a's own height may be stale (a new parent), so only its children's heights are used.
-        int b = nodeChild1[a];
-        int c = nodeChild2[a];
-        int diff = nodeHeight[c] - nodeHeight[b];
-        if (diff > 1) {
-            return rotateUp(a, c, true, tree);
-        }
-        if (diff < -1) {
-            return rotateUp(a, b, false, tree);
-        }
-        return a;
-    }
-
-    /**
-     * Rotates child p of a into a's place: p's taller child stays with p, a becomes p's other
-     * child and takes p's shorter child in the slot where p was.
-     */
-    private int rotateUp(int a, int p, boolean pIsChild2, int tree) {
-        int f = nodeChild1[p];
-        int g = nodeChild2[p];
-        int keep;
-        int give;
-        if (nodeHeight[f] > nodeHeight[g]) {
-            keep = f;
-            give = g;
-        } else {
-            keep = g;
-            give = f;
-        }
-        int up = nodeParent[a];
-        nodeParent[p] = up;
-        if (up == NULL) {
-            roots[tree] = p;
-        } else if (nodeChild1[up] == a) {
-            nodeChild1[up] = p;
-        } else {
-            nodeChild2[up] = p;
-        }
-        nodeChild1[p] = a;
-        nodeChild2[p] = keep;
-        nodeParent[keep] = p;
-        nodeParent[a] = p;
-        if (pIsChild2) {
-            nodeChild2[a] = give;
-        } else {
-            nodeChild1[a] = give;
-        }
-        nodeParent[give] = a;
-        refit(a);
-        refit(p);
-        return p;
-    }
-
-    /** Cost of inserting the leaf box somewhere below {@code child} (excluding inheritance). */
-    private float descentCost(int child, float minX, float minY, float maxX, float maxY) {
-        float combined = unionPerimeter(child, minX, minY, maxX, maxY);
-        // A leaf would get a new parent of this perimeter; an internal node merely grows.
-        return nodeHeight[child] == 0 ? combined : combined - perimeter(child);
-    }
-
-    private float perimeter(int node) {
-        return 2f * ((nodeMaxX[node] - nodeMinX[node]) + (nodeMaxY[node] - nodeMinY[node]));
-    }
-
-    private float unionPerimeter(int node, float minX, float minY, float maxX, float maxY) {
-        float w = max(nodeMaxX[node], maxX) - min(nodeMinX[node], minX);
-        float h = max(nodeMaxY[node], maxY) - min(nodeMinY[node], minY);
-        return 2f * (w + h);
-    }
-
-    private static float min(float a, float b) {
-        return a < b ? a : b;
-    }
-
-    private static float max(float a, float b) {
-        return a > b ? a : b;
+        trees[STATIC_TREE].shift(dx, dy);
+        trees[DYNAMIC_TREE].shift(dx, dy);
     }
 
     // ------------------------------------------------------------------------------------------
@@ -1059,94 +737,21 @@ public final class BroadPhase {
      * @throws IllegalStateException describing the first violation found
      */
     public void validate() {
-        int reachable = 0;
-        int leaves = 0;
-        for (int tree = STATIC_TREE; tree <= DYNAMIC_TREE; tree++) {
-            int root = roots[tree];
-            if (root == NULL) {
-                continue;
-            }
-            checkState(root >= 0 && root < nodeHighWater, "root %d out of range", root, 0);
-            checkState(nodeParent[root] == NULL, "root %d has parent %d", root, nodeParent[root]);
-            int base = stackTop;
-            try {
-                push(root);
-                while (stackTop > base) {
-                    int node = stack[--stackTop];
-                    reachable++;
-                    checkState(reachable <= nodeHighWater, "cycle through node %d", node, 0);
-                    int height = nodeHeight[node];
-                    int c1 = nodeChild1[node];
-                    int c2 = nodeChild2[node];
-                    checkState(height >= 0, "free node %d is in the tree", node, 0);
-                    if (height == 0) {
-                        leaves++;
-                        checkState(c1 == NULL && c2 == NULL, "leaf %d has child %d", node,
-                                c1 != NULL ? c1 : c2);
-                        int proxy = nodeProxy[node];
-                        checkState(proxy >= 0 && proxy < proxyHighWater
-                                && proxyNode[proxy] == node,
-                                "leaf %d has proxy %d not pointing back", node, proxy);
-                        checkState(proxyTree[proxy] == tree, "proxy %d is in the wrong tree (%d)",
-                                proxy, tree);
-                        continue;
-                    }
-                    checkState(nodeProxy[node] == NULL, "internal node %d has proxy %d", node,
-                            nodeProxy[node]);
-                    checkState(c1 >= 0 && c1 < nodeHighWater, "node %d has bad child1 %d", node,
-                            c1);
-                    checkState(c2 >= 0 && c2 < nodeHighWater, "node %d has bad child2 %d", node,
-                            c2);
-                    checkState(c1 != c2, "node %d has child %d twice", node, c1);
-                    checkState(nodeParent[c1] == node, "child %d of node %d has another parent",
-                            c1, node);
-                    checkState(nodeParent[c2] == node, "child %d of node %d has another parent",
-                            c2, node);
-                    checkState(nodeHeight[c1] >= 0 && nodeHeight[c2] >= 0,
-                            "node %d has a free child (%d)", node, nodeHeight[c1] < 0 ? c1 : c2);
-                    checkState(height == 1 + Math.max(nodeHeight[c1], nodeHeight[c2]),
-                            "node %d has wrong height %d", node, height);
-                    checkState(nodeMinX[node] == min(nodeMinX[c1], nodeMinX[c2])
-                            && nodeMinY[node] == min(nodeMinY[c1], nodeMinY[c2])
-                            && nodeMaxX[node] == max(nodeMaxX[c1], nodeMaxX[c2])
-                            && nodeMaxY[node] == max(nodeMaxY[c1], nodeMaxY[c2]),
-                            "box of node %d is not the union of its children's (height %d)",
-                            node, height);
-                    push(c1);
-                    push(c2);
-                }
-            } finally {
-                stackTop = base;
-            }
-        }
-        checkState(reachable == nodeCount, "%d nodes in the tree but %d allocated", reachable,
-                nodeCount);
+        int leaves = trees[STATIC_TREE].validate("BroadPhase") + trees[DYNAMIC_TREE].validate("BroadPhase");
         checkState(leaves == proxyCount, "%d leaves but %d proxies", leaves, proxyCount);
-
-        int free = 0;
-        for (int node = freeNodeHead; node != NULL; node = nodeParent[node]) {
-            checkState(node >= 0 && node < nodeHighWater, "free node %d out of range", node, 0);
-            checkState(nodeHeight[node] == -1, "node %d on the free list has height %d", node,
-                    nodeHeight[node]);
-            free++;
-            checkState(free <= nodeHighWater - nodeCount, "node free list too long at %d", node,
-                    free);
-        }
-        checkState(free + nodeCount == nodeHighWater, "%d free nodes, expected %d", free,
-                nodeHighWater - nodeCount);
 
         int live = 0;
         int moved = 0;
         for (int p = 0; p < proxyHighWater; p++) {
             int node = proxyNode[p];
             if (node == NULL) {
-                checkState(proxyMoveIndex[p] == NULL, "free proxy %d is in the move buffer", p,
-                        0);
+                checkState(proxyMoveIndex[p] == NULL, "free proxy %d is in the move buffer", p, 0);
                 continue;
             }
             live++;
-            checkState(node >= 0 && node < nodeHighWater && nodeHeight[node] == 0
-                    && nodeProxy[node] == p, "proxy %d points to node %d, not its leaf", p, node);
+            checkState(proxyTree[p] == STATIC_TREE || proxyTree[p] == DYNAMIC_TREE, "proxy %d has tree %d", p,
+                    proxyTree[p]);
+            checkState(trees[proxyTree[p]].holds(node, p), "proxy %d points to node %d, not its leaf", p, node);
             int index = proxyMoveIndex[p];
             if (index != NULL) {
                 moved++;
@@ -1170,9 +775,7 @@ public final class BroadPhase {
     }
 
     private static void checkState(boolean ok, String format, int a, int b) {
-        if (!ok) {
-            throw new IllegalStateException("BroadPhase.validate: " + String.format(format, a, b));
-        }
+        DynamicTree.check(ok, "BroadPhase", format, a, b);
     }
 
     // ------------------------------------------------------------------------------------------

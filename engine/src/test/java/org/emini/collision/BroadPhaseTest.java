@@ -642,6 +642,20 @@ class BroadPhaseTest {
         java.lang.reflect.Array.set(f.get(bp), index, value);
     }
 
+    /** The broadphase's dynamic tree (all proxies of smallTree are dynamic). */
+    private static DynamicTree dynamicTree(BroadPhase bp) throws ReflectiveOperationException {
+        Field f = BroadPhase.class.getDeclaredField("trees");
+        f.setAccessible(true);
+        return ((DynamicTree[]) f.get(bp))[1];
+    }
+
+    private static void corruptTree(BroadPhase bp, String field, int index, Object value)
+            throws ReflectiveOperationException {
+        Field f = DynamicTree.class.getDeclaredField(field);
+        f.setAccessible(true);
+        java.lang.reflect.Array.set(f.get(dynamicTree(bp)), index, value);
+    }
+
     private static BroadPhase smallTree() {
         BroadPhase bp = new BroadPhase(1f);
         for (int i = 0; i < 8; i++) {
@@ -655,20 +669,20 @@ class BroadPhaseTest {
     void validateReportsBrokenInvariants() throws ReflectiveOperationException {
         BroadPhase bp = smallTree();
         // A leaf's box grows without its ancestors being refitted.
-        corrupt(bp, "nodeMaxX", 0, 1000f);
+        corruptTree(bp, "nodeMaxX", 0, 1000f);
         IllegalStateException e = assertThrows(IllegalStateException.class, bp::validate);
         assertTrue(e.getMessage().contains("union"), e.getMessage());
 
         bp = smallTree();
-        Field rootsField = BroadPhase.class.getDeclaredField("roots");
-        rootsField.setAccessible(true);
-        int root = ((int[]) rootsField.get(bp))[1]; // the dynamic tree
-        corrupt(bp, "nodeHeight", root, 99);
+        Field rootField = DynamicTree.class.getDeclaredField("root");
+        rootField.setAccessible(true);
+        int root = (int) rootField.get(dynamicTree(bp));
+        corruptTree(bp, "nodeHeight", root, 99);
         e = assertThrows(IllegalStateException.class, bp::validate);
         assertTrue(e.getMessage().contains("height"), e.getMessage());
 
         bp = smallTree();
-        corrupt(bp, "nodeParent", 0, 0);
+        corruptTree(bp, "nodeParent", 0, 0);
         assertThrows(IllegalStateException.class, bp::validate);
 
         bp = smallTree();
