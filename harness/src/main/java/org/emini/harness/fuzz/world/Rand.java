@@ -75,7 +75,8 @@ final class Rand {
         return values[(int) (unit() * values.length)];
     }
 
+    /** v rounded to a multiple of step; never −0 (a scene file writes it as 0). */
     static float round(double v, float step) {
-        return (float) (Math.rint(v / step) * step);
+        return (float) (Math.rint(v / step) * step) + 0f;
     }
 }
