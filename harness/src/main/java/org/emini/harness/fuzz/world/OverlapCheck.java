@@ -20,7 +20,8 @@ import org.emini.dynamics.World;
  * is simulated (outside the simulation area: frozen bodies keep whatever overlap they had), and
  * contacts with one-sided (faced) landscape segments, which a body coming from the open side overlaps
  * on its way through by design until its centre has crossed (a faced floor's sinking body is still
- * caught by the pass-through check). Judged only in worlds of at least {@link #MIN_ITERATIONS}
+ * caught by the pass-through check), and pairs a joint or spring links ({@link Links}: the link
+ * may pull them into each other by design). Judged only in worlds of at least {@link #MIN_ITERATIONS}
  * iterations: with one or two substeps a tick, the soft contacts do not hold a pile (measured: 2–4 px
  * under a mass ratio of 1:16 at 2 iterations, a body on a 0.3-mass plank at 1); such worlds are checked
  * for everything else.
@@ -36,9 +37,11 @@ final class OverlapCheck implements TickCheck {
     private final Map<Long, Integer> deepTicks = new HashMap<>();
     private final Map<Long, Integer> seen = new HashMap<>();
     private int persistTicks;
+    private Links links;
 
     @Override
     public void start(FuzzWorld w) {
+        links = new Links(w);
         persistTicks = (int) Math.ceil(PERSIST * w.recipe().ticksPerSecond);
     }
 
@@ -52,7 +55,7 @@ final class OverlapCheck implements TickCheck {
             for (int k = 0; k < c.getPointCount(); k++) {
                 depth = Math.max(depth, c.getDepth(k));
             }
-            if (depth <= BOUND || c.isLandscape() && w.world().getLandscape().getFace(c.getSegment()) != 0 || !simulated(w, c.getBodyA()) && (c.isLandscape() || !simulated(w, c.getBodyB()))) {
+            if (depth <= BOUND || links.linked(c.getBodyA(), c.getBodyB()) || c.isLandscape() && w.world().getLandscape().getFace(c.getSegment()) != 0 || !simulated(w, c.getBodyA()) && (c.isLandscape() || !simulated(w, c.getBodyB()))) {
                 continue;
             }
             long key = key(c);

@@ -20,8 +20,9 @@ import org.emini.dynamics.World;
  *   coming from the open side passes, as the engine documents).</li>
  * </ul>
  *
- * A body meets a static body when both are interacting and share no collision layer; the landscape
- * meets every dynamic body. Bodies frozen by the simulation area do not move, so they pass nothing.
+ * A body meets a static body when both are interacting and share no collision layer and no joint or
+ * spring links them (a link may pull a body into the static one by design, {@link Links}); the
+ * landscape meets every dynamic body. Bodies frozen by the simulation area do not move, so they pass nothing.
  */
 final class PassThroughCheck implements TickCheck {
     /** How far the core may come inside a static body (px). */
@@ -33,9 +34,11 @@ final class PassThroughCheck implements TickCheck {
     private final List<double[]> previous = new ArrayList<>();
     private final List<Body> walls = new ArrayList<>();
     private final List<float[]> wallBoxes = new ArrayList<>();
+    private Links links;
 
     @Override
     public void start(FuzzWorld w) {
+        links = new Links(w);
         World world = w.world();
         for (int i = 0; i < world.getBodyCount(); i++) {
             Body b = world.getBody(i);
@@ -79,7 +82,7 @@ final class PassThroughCheck implements TickCheck {
         for (int k = 0; k < walls.size(); k++) {
             Body s = walls.get(k);
             float[] box = wallBoxes.get(k);
-            if ((s.getCollisionLayers() & b.getCollisionLayers()) != 0 || !w.inWorld(s)
+            if ((s.getCollisionLayers() & b.getCollisionLayers()) != 0 || !w.inWorld(s) || links.linked(b, s)
                     || Math.max(p[0], q[0]) < box[0] || Math.min(p[0], q[0]) > box[2]
                     || Math.max(p[1], q[1]) < box[1] || Math.min(p[1], q[1]) > box[3]) {
                 continue;

@@ -15,7 +15,8 @@ import org.emini.particle.ParticleEmitter;
  * body's flags, layers, pose, velocity, mass properties, material and bounding box, every
  * constraint's kind, bodies and parameters, the landscape and the emitters' settings. Lengths may
  * differ by {@code length} px, angles by {@code length}/1000 rad after wrapping, masses and factors
- * by {@code relative} of their size.
+ * by {@code relative} of their size, inertias also by 4·{@code length}/size of themselves (moved
+ * vertices change a small shape's inertia relatively more).
  */
 final class WorldDiff {
     private final double length;
@@ -72,7 +73,9 @@ final class WorldDiff {
         near(w + " vy", a.getVelocityY(), b.getVelocityY(), length);
         near(w + " omega", a.getAngularVelocity(), b.getAngularVelocity(), length / 1000);
         near(w + " mass", a.getMass(), b.getMass(), relative * a.getMass());
-        near(w + " inertia", a.getInertia(), b.getInertia(), relative * a.getInertia());
+        // Vertices moved by up to `length` change an inertia (∝ size²) by about 2·length/size of itself.
+        double size = Math.max(a.getShape().getBoundingRadius(), 1e-6);
+        near(w + " inertia", a.getInertia(), b.getInertia(), Math.max(relative, 4 * length / size) * a.getInertia());
         near(w + " friction", a.getShape().getFriction(), b.getShape().getFriction(), relative);
         near(w + " elasticity", a.getShape().getElasticity(), b.getShape().getElasticity(), relative);
         float[] ba = new float[4];
