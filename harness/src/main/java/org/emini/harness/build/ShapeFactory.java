@@ -20,11 +20,19 @@ import org.emini.shape.Shape;
  * mass; the whole then gets the multi-shape's mass (by default the sum of its parts). The body rotates
  * about the frame's origin, which the scene states is the centre of mass: the parts are not moved to
  * their centroid.
+ *
+ * <p>Public so that the world fuzzer (org.emini.harness.fuzz.world) builds its shapes exactly as a
+ * scene's are built, which its scene files rely on.
  */
-final class ShapeFactory {
+public final class ShapeFactory {
     private final Map<ShapeSpec, Shape> made = new IdentityHashMap<>();
 
-    Shape shape(ShapeSpec spec) throws UnsupportedElementException {
+    /**
+     * The engine shape of a spec: made once, then the same object for every body that uses it.
+     *
+     * @throws UnsupportedElementException never today; kept for shapes the engine cannot express
+     */
+    public Shape shape(ShapeSpec spec) throws UnsupportedElementException {
         Shape shape = made.get(spec);
         if (shape == null) {
             shape = spec.kind() == ShapeSpec.Kind.multiShape ? multi(spec) : create(spec);
