@@ -267,9 +267,10 @@ public final class Collider {
 
     /**
      * Collides a landscape segment A with a circle or polygon B: one or two points whose normal
-     * points from the segment to B. Which side B is on is decided by (bx, by), its body's position
-     * (pass the body's pose for a part of a multi-shape): a faced segment reports nothing for a
-     * body on its open side. See {@link Segment} for the facing and the smoothing of joints.
+     * points from the segment to B. Which side B is on is decided, for every part of a multi-shape
+     * alike, by its body's position (bx, by) for a faced segment, as in the original engine, and by
+     * its body's centre of mass (sideX, sideY) for an unfaced one: a faced segment reports nothing
+     * for a body on its open side. See {@link Segment} for the facing and the smoothing of joints.
      *
      * <p>Feature ids: a circle's point has id 0; a polygon's follow the polygon–polygon scheme, with
      * the segment as A and its ends numbered 0 and 1 (which end is 0 depends on the side B is on).
@@ -280,17 +281,19 @@ public final class Collider {
      * @param by the world y of B's local origin (px)
      * @param bc cos of B's rotation
      * @param bs sin of B's rotation
+     * @param sideX the world x of B's body's centre of mass (px)
+     * @param sideY the world y of B's body's centre of mass (px)
      * @param speculativeDistance the largest gap still reported (px)
      * @param out receives the contact
      * @throws IllegalArgumentException if B is not a circle or a polygon
      */
-    public void collideSegment(Segment a, Shape b, float bx, float by, float bc, float bs,
-            float speculativeDistance, Manifold out) {
+    public void collideSegment(Segment a, Shape b, float bx, float by, float bc, float bs, float sideX,
+            float sideY, float speculativeDistance, Manifold out) {
         int tb = b.getType();
         if (tb == Shape.TYPE_POLYGON) {
-            segments.collidePolygon(a, (Polygon) b, bx, by, bc, bs, speculativeDistance, out);
+            segments.collidePolygon(a, (Polygon) b, bx, by, bc, bs, sideX, sideY, speculativeDistance, out);
         } else if (tb == Shape.TYPE_CIRCLE) {
-            segments.collideCircle(a, (Circle) b, bx, by, bc, bs, speculativeDistance, out);
+            segments.collideCircle(a, (Circle) b, bx, by, bc, bs, sideX, sideY, speculativeDistance, out);
         } else {
             throw new IllegalArgumentException("Collider.collideSegment: no narrowphase for shape type "
                     + tb + "; a multi-shape collides part by part");

@@ -9,8 +9,11 @@ import org.emini.shape.Shape;
  * Segment–circle and segment–polygon narrowphase for the landscape: one-sided where the segment is
  * faced, and smooth across the joints of a chain of segments.
  *
- * <p>The side a shape collides from is decided by the position of its body (the shape's local
- * origin, as in the original engine; a multi-shape body passes or is stopped as a whole): a faced
+ * <p>The side a shape collides from is decided by one point of its body (a multi-shape body passes
+ * or is stopped as a whole): for a faced segment its position (the local origin), as in the original
+ * engine, whose one-way platforms let a body through by where its origin is; for an unfaced segment
+ * its centre of mass, because an off-centre shape's origin may cross the line before the shape
+ * touches it, and the segment then pushed the shape through to the other side. A faced
  * segment ignores a body on its open side, so a body coming from there passes through and is never
  * pushed through to the blocking side, while a body exactly on the line is blocked; an unfaced
  * segment collides from whichever side the body is on. Once a shape touches, the caller may keep
@@ -54,9 +57,18 @@ final class SegmentCollider {
         this.polygons = polygons;
     }
 
+    /** The point that decides the side: the body's origin for a faced segment, its centre of mass otherwise. */
+    private static float sidePointX(Segment seg, float originX, float centreX) {
+        return seg.face == Segment.FACE_NONE ? centreX : originX;
+    }
+
+    private static float sidePointY(Segment seg, float originY, float centreY) {
+        return seg.face == Segment.FACE_NONE ? centreY : originY;
+    }
+
     /**
-     * Sets up the segment against a shape placed at (ox, oy) (the body's position, which decides
-     * the side) whose centroid is at (cx, cy); returns false when the shape cannot collide with it
+     * Sets up the segment against a shape whose body's side point is at (ox, oy), and whose own
+     * centroid is at (cx, cy); returns false when the shape cannot collide with it
      * (a point segment, the body on the open side, or the shape on a neighbour's other side).
      */
     private boolean begin(Segment seg, float ox, float oy, float cx, float cy) {
@@ -73,7 +85,7 @@ final class SegmentCollider {
         ux = dx / length;
         uy = dy / length;
         // The left normal (−uy, ux): a body at p is on the face-1 side when (p − start)·left < 0.
-        // As in the original, the body's position decides, and a body on the line is blocked.
+        // A body on the line is blocked.
         float side = (ox - seg.x1) * -uy + (oy - seg.y1) * ux;
         int blocking = seg.face == Segment.FACE_LEFT ? -1 : (seg.face == Segment.FACE_RIGHT ? 1 : 0);
         int sign;
@@ -162,12 +174,12 @@ final class SegmentCollider {
         return k1 >= -ANGLE_TOLERANCE * Math.abs(k) && k2 >= -ANGLE_TOLERANCE * Math.abs(k);
     }
 
-    void collideCircle(Segment seg, Circle b, float bx, float by, float bc, float bs,
+    void collideCircle(Segment seg, Circle b, float bx, float by, float bc, float bs, float sideX, float sideY,
             float speculativeDistance, Manifold out) {
         out.pointCount = 0;
         float px = bx + bc * b.getCenterX() - bs * b.getCenterY();
         float py = by + bs * b.getCenterX() + bc * b.getCenterY();
-        if (!begin(seg, bx, by, px, py)) {
+        if (!begin(seg, sidePointX(seg, bx, sideX), sidePointY(seg, by, sideY), px, py)) {
             return;
         }
         float radius = b.getRadius();
@@ -207,12 +219,13 @@ final class SegmentCollider {
         writeOnePoint(mx, my, vx + h * mx, vy + h * my, separation, out);
     }
 
-    void collidePolygon(Segment seg, Polygon b, float bx, float by, float bc, float bs,
+    void collidePolygon(Segment seg, Polygon b, float bx, float by, float bc, float bs, float sideX, float sideY,
             float speculativeDistance, Manifold out) {
         out.pointCount = 0;
         float lx = b.getCentroidX();
         float ly = b.getCentroidY();
-        if (!begin(seg, bx, by, bx + bc * lx - bs * ly, by + bs * lx + bc * ly)) {
+        if (!begin(seg, sidePointX(seg, bx, sideX), sidePointY(seg, by, sideY), bx + bc * lx - bs * ly,
+                by + bs * lx + bc * ly)) {
             return;
         }
         // The polygon relative to the segment's start, in world orientation.

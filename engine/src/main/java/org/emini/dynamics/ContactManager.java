@@ -402,7 +402,12 @@ final class ContactManager implements PairCallback, QueryCallback {
         l.fill(slot, segment);
         segment.side = c.pointCount > 0 ? c.segmentSide : 0;
         float margin = speculative + dt * sweepSpeed(a);
-        collider.collideSegment(segment, part(a.getShape(), c.partA), a.x, a.y, a.c, a.s, margin, manifold);
+        // The body's centre of mass decides the side, for every part alike.
+        Shape whole = a.getShape();
+        float cx = whole.getCentroidX();
+        float cy = whole.getCentroidY();
+        collider.collideSegment(segment, part(whole, c.partA), a.x, a.y, a.c, a.s, a.x + a.c * cx - a.s * cy,
+            a.y + a.s * cx + a.c * cy, margin, manifold);
         c.segmentSide = collider.getSegmentSide();
         // The collider's normal points from the segment to the body; the contact's from A, the body.
         manifold.normalX = -manifold.normalX;

@@ -40,6 +40,11 @@ final class ContinuousSolver implements QueryCallback {
     private float x1;
     private float y1;
     private float a1;
+    // The moving body's centre of mass at the start and the end of the tick: its side of an unfaced segment.
+    private float cx0;
+    private float cy0;
+    private float cx1;
+    private float cy1;
     private float target;
     private float fraction;
     private float[] state;
@@ -81,6 +86,12 @@ final class ContinuousSolver implements QueryCallback {
             x0 = x1 - dx;
             y0 = y1 - dy;
             a0 = b.angle;
+            float lx = shape.getCentroidX();
+            float ly = shape.getCentroidY();
+            cx0 = x0 + b.c * lx - b.s * ly;
+            cy0 = y0 + b.s * lx + b.c * ly;
+            cx1 = x1 + st[o + C] * lx - st[o + S] * ly;
+            cy1 = y1 + st[o + S] * lx + st[o + C] * ly;
             fraction = 1f;
             shape.computeAabb(x0, y0, b.c, b.s, box);
             shape.computeAabb(x1, y1, st[o + C], st[o + S], box2);
@@ -150,7 +161,7 @@ final class ContinuousSolver implements QueryCallback {
 
     /**
      * The sweep against the landscape: the segments whose boxes meet the swept box and that the
-     * body would get through by the end pose, its centre crossing the segment's line or its shape
+     * body would get through by the end pose, its side point crossing the segment's line or its shape
      * sinking deeper than its core radius (what the contacts would not undo). Not the segments a
      * body merely slides onto along a chain, nor a faced segment whose open side it starts on (it
      * may pass), nor zero-length ones (they stop nothing).
@@ -176,16 +187,20 @@ final class ContinuousSolver implements QueryCallback {
             if (ex * ex + ey * ey < 1e-12f) {
                 return true;
             }
-            // (end − start) × (position − start): negative on the left side, which face 1 blocks;
-            // as in the narrowphase, a body exactly on the line is blocked.
-            float before = ex * (y0 - segment.y1) - ey * (x0 - segment.x1);
+            // (end − start) × (side point − start): negative on the left side, which face 1 blocks;
+            // as in the narrowphase, the origin decides for a faced segment, the centre of mass for
+            // an unfaced one, and a body exactly on the line is blocked.
+            boolean faced = segment.face != Segment.FACE_NONE;
+            float before = faced ? ex * (y0 - segment.y1) - ey * (x0 - segment.x1)
+                : ex * (cy0 - segment.y1) - ey * (cx0 - segment.x1);
             if (segment.face != Segment.FACE_NONE && before != 0f
                     && (segment.face == Segment.FACE_LEFT) != (before < 0f)) {
                 return true;
             }
             float c1 = state[moving.solverIndex * SolverBodies.STRIDE + C];
             float s1 = state[moving.solverIndex * SolverBodies.STRIDE + S];
-            float after = ex * (y1 - segment.y1) - ey * (x1 - segment.x1);
+            float after = faced ? ex * (y1 - segment.y1) - ey * (x1 - segment.x1)
+                : ex * (cy1 - segment.y1) - ey * (cx1 - segment.x1);
             boolean crossed = (before < 0f) != (after < 0f);
             if (!crossed && TimeOfImpact.segmentSeparation(shape, x1, y1, c1, s1, segment)
                     > -Math.max(TimeOfImpact.coreRadius(shape), target)) {

@@ -22,7 +22,12 @@ class SegmentColliderTest {
     private final Circle ball = Shape.createCircle(10f);
 
     private void collide(Segment s, Shape shape, float x, float y, float angle, float speculative) {
-        collider.collideSegment(s, shape, x, y, (float) Math.cos(angle), (float) Math.sin(angle), speculative, m);
+        float c = (float) Math.cos(angle);
+        float sn = (float) Math.sin(angle);
+        // The shape is the whole body here: its centroid decides the side.
+        float cx = x + c * shape.getCentroidX() - sn * shape.getCentroidY();
+        float cy = y + sn * shape.getCentroidX() + c * shape.getCentroidY();
+        collider.collideSegment(s, shape, x, y, c, sn, cx, cy, speculative, m);
     }
 
     @Test

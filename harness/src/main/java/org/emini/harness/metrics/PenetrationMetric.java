@@ -57,7 +57,11 @@ final class PenetrationMetric implements Metric {
                     continue;
                 }
                 landscapeSegment(index, c);
-                collider.collideSegment(segment, sa, a.getX(), a.getY(), a.getCos(), a.getSin(), 0f, manifold);
+                // The body's centre of mass decides the side, as in the engine.
+                Shape whole = a.getShape();
+                collider.collideSegment(segment, sa, a.getX(), a.getY(), a.getCos(), a.getSin(),
+                        a.toWorldX(whole.getCentroidX(), whole.getCentroidY()),
+                        a.toWorldY(whole.getCentroidX(), whole.getCentroidY()), 0f, manifold);
             } else {
                 Body b = c.getBodyB();
                 collider.collide(sa, a.getX(), a.getY(), a.getCos(), a.getSin(),
