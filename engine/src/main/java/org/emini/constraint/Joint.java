@@ -162,6 +162,13 @@ public final class Joint extends TwoBodyConstraint {
         float massScale = useBias ? step.getJointMassScale() : 1f;
         float impulseScale = useBias ? step.getJointImpulseScale() : 0f;
         if (axialMass != 0f) {
+            arms(step);
+            float weld = solveWeld(step, useBias, biasRate, massScale, impulseScale);
+            if (weld >= 0f) {
+                return weld;
+            }
+        }
+        if (axialMass != 0f) {
             float bias = 0f;
             if (useBias) {
                 float maxTurn = radius > 0f ? step.getJointPushMaxVelocity() / radius : Float.POSITIVE_INFINITY;
@@ -216,6 +223,78 @@ public final class Joint extends TwoBodyConstraint {
             }
         }
         return change;
+    }
+
+    /**
+     * A fixed joint's point and angle rows solved together, as one 3×3 block (Box2D 2.4's weld): solved
+     * one after the other, the two rows fight when an anchor sits far out on a light body (a small
+     * circle welded by a 400 px arm diverged, each row undoing the other by more than it fixed).
+     *
+     * @return the relax pass's change, as {@link #solve} reports it, or −1 when the block is singular
+     *     (the rows are then solved one by one)
+     */
+    private float solveWeld(SolverStep step, boolean useBias, float biasRate, float massScale, float impulseScale) {
+        float m = mA + mB;
+        float k11 = m + iA * rAy * rAy + iB * rBy * rBy;
+        float k12 = -iA * rAy * rAx - iB * rBy * rBx;
+        float k13 = -iA * rAy - iB * rBy;
+        float k22 = m + iA * rAx * rAx + iB * rBx * rBx;
+        float k23 = iA * rAx + iB * rBx;
+        float k33 = iA + iB;
+        // Cofactors of the symmetric K; det = k11·c11 + k12·c12 + k13·c13.
+        float c11 = k22 * k33 - k23 * k23;
+        float c12 = k13 * k23 - k12 * k33;
+        float c13 = k12 * k23 - k13 * k22;
+        float det = k11 * c11 + k12 * c12 + k13 * c13;
+        if (!(det > 0f) || !EMath.isFinite(det)) {
+            return -1f;
+        }
+        float c22 = k11 * k33 - k13 * k13;
+        float c23 = k12 * k13 - k11 * k23;
+        float c33 = k11 * k22 - k12 * k12;
+        float cx = relativeVelocityX(step);
+        float cy = relativeVelocityY(step);
+        float cw = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
+        if (useBias) {
+            float bx = biasRate * sepX;
+            float by = biasRate * sepY;
+            float max = step.getJointPushMaxVelocity();
+            float b2 = bx * bx + by * by;
+            if (b2 > max * max) {
+                float scale = max / EMath.sqrt(b2);
+                bx *= scale;
+                by *= scale;
+            }
+            float maxTurn = radius > 0f ? max / radius : Float.POSITIVE_INFINITY;
+            float bw = biasRate * angleError(step);
+            cx += bx;
+            cy += by;
+            cw += bw < -maxTurn ? -maxTurn : (bw > maxTurn ? maxTurn : bw);
+        }
+        float inv = massScale / det;
+        float px = -inv * (c11 * cx + c12 * cy + c13 * cw) - impulseScale * accX;
+        float py = -inv * (c12 * cx + c22 * cy + c23 * cw) - impulseScale * accY;
+        float pw = -inv * (c13 * cx + c23 * cy + c33 * cw) - impulseScale * accAngle;
+        accX += px;
+        accY += py;
+        accAngle += pw;
+        tickX += px;
+        tickY += py;
+        tickAngle += pw;
+        applyLinear(step, px, py);
+        step.applyAngularImpulse(ia, -pw);
+        step.applyAngularImpulse(ib, pw);
+        if (useBias) {
+            return 0f;
+        }
+        // The relative velocity K·(acc − warm) the substep's impulse changed beyond its warm start.
+        float jx = accX - warmX;
+        float jy = accY - warmY;
+        float jw = accAngle - warmAngle;
+        float dx = Math.abs(k11 * jx + k12 * jy + k13 * jw);
+        float dy = Math.abs(k12 * jx + k22 * jy + k23 * jw);
+        float dw = Math.abs(k13 * jx + k23 * jy + k33 * jw) * radius;
+        return Math.max(dx, Math.max(dy, dw));
     }
 
     /** The angle error now: the tick's start error turned by the bodies' relative rotation since. */

@@ -28,7 +28,11 @@ final class Extremes {
             }
             case 1 -> {
                 ShapeRecipe s = r.shapes.get((int) (rand.unit() * r.shapes.size()));
-                scale(s, rand.chance(0.5) ? 1f / 256f : 100f);
+                if (rand.chance(0.5)) {
+                    shrink(s);
+                } else {
+                    scale(s, 100f);
+                }
             }
             case 2 -> {
                 ShapeRecipe s = r.shapes.get((int) (rand.unit() * r.shapes.size()));
@@ -54,6 +58,33 @@ final class Extremes {
                 s.hertz = 0f;
                 s.stiffness = 1e9f;
             });
+        }
+    }
+
+    /**
+     * Halves a shape up to eight times (to 1/256), stopping at the last size the engine accepts
+     * (Shape.MIN_SIZE across): the smallest bodies a world may hold, not values it refuses.
+     */
+    private static void shrink(ShapeRecipe s) {
+        for (int i = 0; i < 8; i++) {
+            scale(s, 0.5f);
+            if (!builds(s)) {
+                scale(s, 2f);
+                return;
+            }
+        }
+    }
+
+    private static boolean builds(ShapeRecipe s) {
+        try {
+            if (s.offCentreCircle()) {
+                new org.emini.shape.Circle(s.radius, s.centerX, s.centerY);
+            } else {
+                new org.emini.harness.build.ShapeFactory().shape(ShapeBuilder.spec(s));
+            }
+            return true;
+        } catch (IllegalArgumentException | org.emini.harness.build.UnsupportedElementException e) {
+            return false;
         }
     }
 
