@@ -311,7 +311,7 @@ public final class Joint extends TwoBodyConstraint {
     @Override
     public void finish(SolverStep step) {
         float inv = 1f / step.getTimestep();
-        force = EMath.sqrt(tickX * tickX + tickY * tickY) * inv;
+        force = EMath.length(tickX, tickY) * inv;
         torque = Math.abs(tickAngle) * inv;
     }
 

@@ -365,7 +365,7 @@ public final class Motor implements Constraint {
     @Override
     public void finish(SolverStep step) {
         float inv = 1f / step.getTimestep();
-        force = rotational ? Math.abs(tickAngular) * inv : EMath.sqrt(tickX * tickX + tickY * tickY) * inv;
+        force = rotational ? Math.abs(tickAngular) * inv : EMath.length(tickX, tickY) * inv;
     }
 
     /**

@@ -28,6 +28,26 @@ public final class EMath {
     }
 
     /**
+     * The length of (x, y) without overflow: x² + y² overflows a float from about 1.8e19, while the
+     * length itself is finite whenever x and y are.
+     *
+     * @param x a finite value
+     * @param y a finite value
+     * @return √(x² + y²)
+     */
+    public static float length(float x, float y) {
+        float ax = x < 0f ? -x : x;
+        float ay = y < 0f ? -y : y;
+        float m = ax > ay ? ax : ay;
+        if (m == 0f || m < 1e18f) {
+            return sqrt(x * x + y * y);
+        }
+        float sx = ax / m;
+        float sy = ay / m;
+        return m * sqrt(sx * sx + sy * sy);
+    }
+
+    /**
      * Sine.
      *
      * @param radians the angle in radians
