@@ -38,6 +38,9 @@ final class ContactManager implements PairCallback, QueryCallback {
     Contact[] active = new Contact[64];
     int activeCount;
     private long[] keys = new long[64];
+    // The segments a body's landscape query found, sorted before their contacts are made.
+    private long[] foundSlots = new long[16];
+    private int foundCount;
     /** The pairs in contact, so that a reported pair is checked in O(1). */
     private final PairCounts pairs = new PairCounts();
     /** Whether this tick left a pair without contacts: the world was at its contact capacity. */
@@ -273,9 +276,16 @@ final class ContactManager implements PairCallback, QueryCallback {
             return;
         }
         queryBody = b;
+        foundCount = 0;
         int p = b.proxyId;
         landscape.query(broadPhase.getFatMinX(p), broadPhase.getFatMinY(p), broadPhase.getFatMaxX(p),
             broadPhase.getFatMaxY(p), this);
+        // In slot order, not the index tree's: a segment added far away must not reorder the contacts
+        // (and so the solve) of a body here.
+        HeapSort.sort(foundSlots, foundCount);
+        for (int i = 0; i < foundCount; i++) {
+            addLandscapeContacts(b, (int) foundSlots[i]);
+        }
         queryBody = null;
     }
 
@@ -286,12 +296,19 @@ final class ContactManager implements PairCallback, QueryCallback {
 
     @Override
     public boolean reportProxy(int slot) {
-        Body b = queryBody;
+        if (foundCount == foundSlots.length) {
+            foundSlots = Arrays.copyOf(foundSlots, 2 * foundCount);
+        }
+        foundSlots[foundCount++] = slot;
+        return true;
+    }
+
+    private void addLandscapeContacts(Body b, int slot) {
         long key = PairCounts.segment(b.slot, slot);
         // A body's parts touch a segment together: they are created and destroyed together.
         int parts = partCount(b.getShape());
         if (pairs.contains(key) || full(parts)) {
-            return true;
+            return;
         }
         for (int k = 0; k < parts; k++) {
             Contact c = create(b, null, k, 0);
@@ -300,7 +317,6 @@ final class ContactManager implements PairCallback, QueryCallback {
             c.segmentStamp = landscape.stampOf(slot);
             pairs.add(key);
         }
-        return true;
     }
 
     // ---------------------------------------------------------------------------------------------
