@@ -24,14 +24,15 @@ import org.emini.shape.Shape;
 final class ShapeFactory {
     private final Map<ShapeSpec, Shape> made = new IdentityHashMap<>();
 
-    Shape shape(ShapeSpec spec) throws UnsupportedElementException {
+    Shape shape(ShapeSpec spec) {
         Shape shape = made.get(spec);
         if (shape == null) {
-            shape = spec.kind() == ShapeSpec.Kind.multiShape ? multi(spec) : create(spec);
-            shape.setMass((float) spec.mass());
-            shape.setFriction((float) spec.friction());
-            shape.setElasticity((float) spec.elasticity());
-            made.put(spec, shape);
+            Shape s = Located.at(spec.path(), () -> spec.kind() == ShapeSpec.Kind.multiShape ? multi(spec) : create(spec));
+            Located.at(spec.path().key("mass"), () -> s.setMass((float) spec.mass()));
+            Located.at(spec.path().key("friction"), () -> s.setFriction((float) spec.friction()));
+            Located.at(spec.path().key("elasticity"), () -> s.setElasticity((float) spec.elasticity()));
+            made.put(spec, s);
+            shape = s;
         }
         return shape;
     }
@@ -77,12 +78,12 @@ final class ShapeFactory {
             }
             return;
         }
-        Shape base = create(spec);
-        Shape placed;
+        Shape base = Located.at(spec.path(), () -> create(spec));
+        final Shape placed;
         double c = Math.cos(angle);
         double s = Math.sin(angle);
         if (base instanceof Circle circle) {
-            placed = new Circle(circle.getRadius(), (float) ox, (float) oy);
+            placed = Located.at(spec.path(), () -> new Circle(circle.getRadius(), (float) ox, (float) oy));
         } else {
             Polygon polygon = (Polygon) base;
             float[] xy = new float[2 * polygon.getVertexCount()];
@@ -92,9 +93,9 @@ final class ShapeFactory {
                 xy[2 * i] = (float) (ox + c * x - s * y);
                 xy[2 * i + 1] = (float) (oy + s * x + c * y);
             }
-            placed = Shape.createPolygon(xy);
+            placed = Located.at(spec.path(), () -> Shape.createPolygon(xy));
         }
-        placed.setMass((float) (spec.mass() * scale));
+        Located.at(spec.path().key("mass"), () -> placed.setMass((float) (spec.mass() * scale)));
         out.add(placed);
     }
 }

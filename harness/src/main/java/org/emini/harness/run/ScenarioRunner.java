@@ -140,7 +140,7 @@ public final class ScenarioRunner {
 
     /** Ticks between samples: the record interval rounded to whole ticks (at least one). */
     public static long samplingTicks(RecordSpec record, double timestep) {
-        return Double.isNaN(record.every()) ? 1 : Math.max(1, Math.round(record.every() / timestep));
+        return record.samplingTicks(timestep);
     }
 
     private static List<String> recordedBodies(Scenario scenario, BuiltWorld built) {
