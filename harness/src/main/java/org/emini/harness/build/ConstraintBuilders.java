@@ -8,7 +8,10 @@ import org.emini.dynamics.Body;
 import org.emini.harness.load.JsonPath;
 import org.emini.harness.scenario.Section;
 
-/** Builders of the constraint sections: joints, springs and motors, through the engine's public API. */
+/**
+ * Builders of the constraint sections: joints, springs and motors, through the engine's public API.
+ * Which joined bodies may not collide is {@link CollisionBits}'s work, done before these run.
+ */
 final class ConstraintBuilders {
     private ConstraintBuilders() {
     }
@@ -21,10 +24,7 @@ final class ConstraintBuilders {
         return (float) v.get(1).asDouble();
     }
 
-    /**
-     * Joints that may not collide get a layer bit of their own, counted from 31 down and reused after
-     * 32 joints: neighbours in a chain never share one, which is all a chain needs.
-     */
+    /** Pin joints, or fixed joints that also lock the relative angle. */
     static final class Joints implements ElementBuilder {
         @Override
         public void build(Section section, BuiltWorld world) {
@@ -43,9 +43,6 @@ final class ConstraintBuilders {
                     return new Joint(a, b, pa.isArray() ? x(pa) : 0f, pa.isArray() ? y(pa) : 0f,
                         pb.isArray() ? x(pb) : 0f, pb.isArray() ? y(pb) : 0f, fixed);
                 });
-                if (!j.path("collide").asBoolean(false)) {
-                    joint.setCollisionLayer(31 - i % 32);
-                }
                 world.world().addConstraint(joint);
             }
         }
@@ -73,9 +70,6 @@ final class ConstraintBuilders {
                 if (k > 0f) {
                     Located.at(p.key("stiffness"), () -> spring.setCoefficient(k));
                     Located.at(p.key("damping"), () -> spring.setDamping((float) s.path("damping").asDouble(0)));
-                }
-                if (!s.path("collide").asBoolean(true)) {
-                    spring.setCollisionLayer(i % 32);
                 }
                 world.world().addConstraint(spring);
             }
