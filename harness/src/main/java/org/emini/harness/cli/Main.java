@@ -27,6 +27,17 @@ public final class Main implements Runnable {
 
     /** Runs the command line and returns its exit status (for tests). */
     public static int execute(String... args) {
-        return new CommandLine(new Main()).execute(args);
+        CommandLine cmd = new CommandLine(new Main());
+        Failures failures = new Failures();
+        cmd.setExecutionExceptionHandler(failures);
+        cmd.setParameterExceptionHandler(failures);
+        try {
+            return cmd.execute(args);
+        } catch (Error e) {
+            // picocli hands on Errors (OutOfMemoryError, StackOverflowError): one line here too.
+            CommandLine last = cmd.getParseResult() == null ? cmd : cmd.getParseResult().asCommandLineList()
+                    .get(cmd.getParseResult().asCommandLineList().size() - 1);
+            return Failures.report(e, last);
+        }
     }
 }

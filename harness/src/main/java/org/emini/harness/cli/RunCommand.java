@@ -29,6 +29,8 @@ import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.run.Status;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -41,6 +43,9 @@ import picocli.CommandLine.Parameters;
 final class RunCommand implements Callable<Integer> {
     @Mixin
     Library library;
+
+    @Spec
+    CommandSpec spec;
 
     @Parameters(paramLabel = "PATHS", arity = "0..*", description = "Scene files or folders (default: the library).")
     List<Path> paths;
@@ -62,8 +67,13 @@ final class RunCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         long start = System.nanoTime();
+        if (jobs != null) {
+            Options.atLeast(spec, "--jobs", jobs, 1);
+        }
+        // Made first, so that reports under a file fail now, not after the run.
+        Files.createDirectories(reports);
         ScenarioLoader loader = library.loader();
-        List<Path> files = ScenarioFiles.expand(paths == null || paths.isEmpty() ? List.of(library.root()) : paths);
+        List<Path> files = library.files(spec, paths);
         List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
         long totalTicks = 0;
         int width = 10;
@@ -77,7 +87,7 @@ final class RunCommand implements Callable<Integer> {
         }
         Path traces = noTraces ? null : reports.resolve("traces");
         boolean bar = progress != null ? progress : System.console() != null;
-        int threads = Math.max(1, jobs != null ? jobs : Runtime.getRuntime().availableProcessors());
+        int threads = jobs != null ? jobs : Runtime.getRuntime().availableProcessors();
         List<SceneResult> results = new ArrayList<>();
         ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
             Thread t = new Thread(r, "scene");
