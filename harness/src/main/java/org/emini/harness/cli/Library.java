@@ -11,7 +11,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 
 /** Options shared by the commands: where the schema (and so the scenario library) is. */
-final class Library {
+public final class Library {
     @picocli.CommandLine.Spec(picocli.CommandLine.Spec.Target.MIXEE)
     CommandSpec spec;
 
@@ -20,7 +20,7 @@ final class Library {
     Path schema;
 
     /** The schema file, found upward from the working directory when not given. */
-    Path schemaFile() {
+    public Path schemaFile() {
         if (schema != null) {
             return schema;
         }
@@ -35,7 +35,7 @@ final class Library {
     }
 
     /** The library folder (the schema's folder): scene ids are paths relative to it. */
-    Path root() {
+    public Path root() {
         return schemaFile().toAbsolutePath().getParent();
     }
 
@@ -43,7 +43,7 @@ final class Library {
      * The scene files under PATHS (the library when none are given). A folder that holds none is a
      * usage error: a run of nothing must not pass.
      */
-    List<Path> files(CommandSpec spec, List<Path> paths) {
+    public List<Path> files(CommandSpec spec, List<Path> paths) {
         List<Path> given = paths == null || paths.isEmpty() ? List.of(root()) : paths;
         for (Path p : given) {
             if (Files.isDirectory(p) && ScenarioFiles.expand(List.of(p)).isEmpty()) {
@@ -54,7 +54,8 @@ final class Library {
         return ScenarioFiles.expand(given);
     }
 
-    ScenarioLoader loader() {
+    /** The library's loader. */
+    public ScenarioLoader loader() {
         return new ScenarioLoader(SchemaCheck.fromFile(schemaFile()), root());
     }
 }

@@ -1,18 +1,19 @@
 package org.emini.harness.cli;
 
+import org.emini.harness.fuzz.FuzzCommand;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /**
  * The harness command line: {@code validate} and {@code run} over scenario files and folders,
  * {@code compare} with the pymunk oracle, {@code expand} (scenes as the harness reads them) and
- * {@code convert} between original world files and scene files.
+ * {@code convert} between original world files and scene files, {@code fuzz} of the loaders.
  */
 @Command(name = "harness", mixinStandardHelpOptions = true, version = "emini harness 0.1.0",
         description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
         subcommands = {ValidateCommand.class, RunCommand.class, CompareCommand.class, ExpandCommand.class,
                 SweepCommand.class, StabilityCommand.class, DashboardCommand.class, ConvertCommand.class,
-                CommandLine.HelpCommand.class})
+                FuzzCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @Override

@@ -31,6 +31,9 @@ public final class ScenarioLoader {
         this.libraryRoot = libraryRoot.toAbsolutePath().normalize();
     }
 
+    /** How a problem that is a defect (of the harness or the engine), not a fault of the file, begins. */
+    public static final String INTERNAL_ERROR = "internal error building the world: ";
+
     /** A loaded scene or the problems found. */
     public record Loaded(Path file, Scenario scenario, List<Problem> problems) {
         /** Whether the scene is valid. */
@@ -59,11 +62,17 @@ public final class ScenarioLoader {
         } catch (IOException e) {
             return new Loaded(file, null, List.of(new Problem(shown, 0, 0, "$", "cannot read: " + IoText.describe(e))));
         }
+        Loaded loaded = load(shown, bytes, defaultName(file));
+        return new Loaded(file, loaded.scenario(), loaded.problems());
+    }
+
+    /** Loads a scene file's bytes (for tools such as the fuzzer); {@code name} as in {@link #load(String, String, String)}. */
+    public Loaded load(String shown, byte[] bytes, String name) {
         SceneText.Decoded text = SceneText.decode(shown, bytes);
         if (text.problem() != null) {
-            return new Loaded(file, null, List.of(text.problem()));
+            return new Loaded(Path.of(shown), null, List.of(text.problem()));
         }
-        return load(shown, text.text(), defaultName(file));
+        return load(shown, text.text(), name);
     }
 
     /**
@@ -132,7 +141,7 @@ public final class ScenarioLoader {
             return null;
         } catch (RuntimeException e) {
             // Not a value the engine refused with a reason: a defect, shown as such (and found by harness fuzz).
-            return new Problem(shown, 0, 0, "$", "internal error building the world: " + e);
+            return new Problem(shown, 0, 0, "$", INTERNAL_ERROR + e);
         }
     }
 

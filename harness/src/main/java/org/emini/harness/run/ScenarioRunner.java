@@ -19,7 +19,6 @@ import org.emini.harness.metrics.Metrics;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.Channels;
 import org.emini.harness.scenario.ExpectationSpec;
-import org.emini.harness.scenario.MetricSpec;
 import org.emini.harness.scenario.RecordSpec;
 import org.emini.harness.scenario.Scenario;
 
@@ -42,12 +41,10 @@ public final class ScenarioRunner {
         long ticks = scenario.ticks();
         long t0 = System.nanoTime();
         BuiltWorld built;
-        List<Metric> metrics = new ArrayList<>();
+        List<Metric> metrics;
         try {
             built = WorldBuilder.build(scenario);
-            for (MetricSpec m : scenario.run().record().metrics()) {
-                metrics.add(Metrics.create(m, built));
-            }
+            metrics = Metrics.create(scenario.run().record().metrics(), built);
         } catch (UnsupportedElementException e) {
             progress.accept(ticks);
             return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null);
