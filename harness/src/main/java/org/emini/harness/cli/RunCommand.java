@@ -60,6 +60,10 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--jobs", paramLabel = "N", description = "Scenes run in parallel (default: the number of cores).")
     Integer jobs;
 
+    @Option(names = "--scene-timeout", paramLabel = "SECONDS", defaultValue = "1800",
+            description = "Wall-clock time a scene may run before it stops as ERROR (default: ${DEFAULT-VALUE}).")
+    double sceneTimeout;
+
     @Option(names = "--progress", negatable = true,
             description = "Show a progress bar (default: when the output is a terminal).")
     Boolean progress;
@@ -70,6 +74,7 @@ final class RunCommand implements Callable<Integer> {
         if (jobs != null) {
             Options.atLeast(spec, "--jobs", jobs, 1);
         }
+        Options.require(spec, sceneTimeout > 0, "--scene-timeout must be > 0, was " + sceneTimeout);
         // Made first, so that reports under a file fail now, not after the run.
         Files.createDirectories(reports);
         ScenarioLoader loader = library.loader();
@@ -99,7 +104,7 @@ final class RunCommand implements Callable<Integer> {
             LongConsumer ticks = pb == null ? n -> { } : pb::stepBy;
             List<Future<SceneResult>> futures = new ArrayList<>();
             for (ScenarioLoader.Loaded l : loaded) {
-                futures.add(pool.submit(() -> finish(l, ticks, traces)));
+                futures.add(pool.submit(() -> finish(l, ticks, traces, sceneTimeout)));
             }
             for (Future<SceneResult> f : futures) {
                 SceneResult r = get(f);
@@ -123,7 +128,7 @@ final class RunCommand implements Callable<Integer> {
     }
 
     /** Runs one loaded scene (or reports why it cannot), writes its trace and drops it from memory. */
-    private static SceneResult finish(ScenarioLoader.Loaded l, LongConsumer ticks, Path traces) {
+    private static SceneResult finish(ScenarioLoader.Loaded l, LongConsumer ticks, Path traces, double timeout) {
         if (!l.ok()) {
             StringBuilder msg = new StringBuilder("invalid scene:");
             for (Problem p : l.problems()) {
@@ -132,7 +137,7 @@ final class RunCommand implements Callable<Integer> {
             return new SceneResult(l.file().toString(), l.file().toString(), null, Status.ERROR, msg.toString(),
                     List.of(), List.of(), null, 0, 0, 0, 0, 0, null);
         }
-        SceneResult r = ScenarioRunner.run(l.scenario(), ticks);
+        SceneResult r = ScenarioRunner.run(l.scenario(), ticks, timeout);
         if (traces != null && r.trace() != null && l.scenario().run().record().trace()) {
             try {
                 TraceWriter.write(TraceWriter.fileFor(traces, r.scene()), r.scene(), "emini", r.trace());

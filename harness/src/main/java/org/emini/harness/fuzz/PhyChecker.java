@@ -36,9 +36,14 @@ final class PhyChecker implements Checker {
         }
         Verdict engine = engine(doc);
         if (engine != null) {
-            return engine;
+            return along("engine path", engine);
         }
-        return harness(doc);
+        return along("harness path", harness(doc));
+    }
+
+    /** The verdict with the path it was met on in its stage (both paths tick). */
+    private static Verdict along(String path, Verdict v) {
+        return new Verdict(v.outcome(), v.blame(), path + ": " + v.stage(), v.message());
     }
 
     private Verdict engine(PhyWorld doc) {
@@ -46,9 +51,9 @@ final class PhyChecker implements Checker {
         try {
             built = new WorldBuilder().build(doc);
         } catch (RuntimeException | Error e) {
-            return Verdict.thrown(Outcome.CRASH, "engine build", e);
+            return Verdict.thrown(Outcome.CRASH, "build", e);
         }
-        return WorldState.tick(built.getWorld(), ticks, null, null, Verdict.ENGINE);
+        return WorldState.tick(built.getWorld(), ticks, null, null, Verdict.ENGINE, false);
     }
 
     private Verdict harness(PhyWorld doc) {

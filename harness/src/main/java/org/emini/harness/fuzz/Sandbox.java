@@ -22,6 +22,7 @@ import java.util.concurrent.TimeUnit;
 final class Sandbox implements AutoCloseable {
     private static final String EOF = "\u0000eof";
     private static final Duration STARTUP = Duration.ofSeconds(120);
+    private static final Duration BACKSTOP = Duration.ofSeconds(30);
 
     private final List<String> command;
     private final Duration timeout;
@@ -41,7 +42,8 @@ final class Sandbox implements AutoCloseable {
     Sandbox(String target, Path schema, int ticks, String heap, Duration timeout, Path log) {
         this.command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx" + heap, "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"),
-                FuzzWorker.class.getName(), target, schema.toAbsolutePath().toString(), Integer.toString(ticks)));
+                FuzzWorker.class.getName(), target, schema.toAbsolutePath().toString(), Integer.toString(ticks),
+                Long.toString(timeout.toSeconds())));
         this.timeout = timeout;
         this.log = log;
     }
@@ -54,7 +56,8 @@ final class Sandbox implements AutoCloseable {
         toWorker.write(Base64.getEncoder().encodeToString(input));
         toWorker.write('\n');
         toWorker.flush();
-        String line = answers.poll(timeout.toMillis(), TimeUnit.MILLISECONDS);
+        // The worker answers a hang itself at the limit; this backstop is for a worker too far gone to.
+        String line = answers.poll(timeout.plus(BACKSTOP).toMillis(), TimeUnit.MILLISECONDS);
         if (line == null) {
             stop();
             return new Verdict(Outcome.HANG, "", "worker", "no answer within " + timeout.toSeconds() + " s; killed");
@@ -66,7 +69,7 @@ final class Sandbox implements AutoCloseable {
                     + "); see " + log);
         }
         Verdict v = Verdict.decode(line);
-        if (FuzzWorker.fatal(v)) {
+        if (FuzzWorker.fatal(v) || v.outcome() == Outcome.HANG) {
             process.waitFor(30, TimeUnit.SECONDS);
             stop();
         }

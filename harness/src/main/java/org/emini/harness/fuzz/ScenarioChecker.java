@@ -69,7 +69,7 @@ final class ScenarioChecker implements Checker {
         Schedule schedule = new Schedule(built, scenario.actions(), scenario.world().timestep());
         long n = Math.min(ticks, scenario.ticks());
         Verdict bad = WorldState.tick(built.world(), (int) n, schedule::beforeTick,
-                () -> metrics.forEach(Metric::afterTick), Verdict.ENGINE);
+                () -> metrics.forEach(Metric::afterTick), Verdict.ENGINE, true);
         if (bad != null) {
             return bad;
         }

@@ -50,7 +50,7 @@ final class SetterChecker implements Checker {
             refused = v;
             done.append(done.length() > 0 ? " then " : "").append(line.text()).append(" (refused)");
         }
-        Verdict bad = WorldState.tick(w.world, ticks, null, null, Verdict.ENGINE);
+        Verdict bad = WorldState.tick(w.world, ticks, null, null, Verdict.ENGINE, false);
         if (bad != null) {
             return new Verdict(bad.outcome(), bad.blame(), bad.stage() + " after " + done, bad.message());
         }

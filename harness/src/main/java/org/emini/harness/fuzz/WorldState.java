@@ -3,6 +3,7 @@ package org.emini.harness.fuzz;
 import java.util.function.LongConsumer;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.World;
+import org.emini.harness.build.WorldLimits;
 import org.emini.particle.ParticleEmitter;
 
 /** Where a world's state is not finite: bodies, particles and constraint forces. */
@@ -44,9 +45,12 @@ final class WorldState {
      *
      * @param before run before each tick (scheduled actions), or null
      * @param after run after each tick (metrics), or null
-     * @return a failure, or null when the state stayed finite
+     * @param harnessRun whether the world is run as {@code harness run} runs it, which stops a body
+     *     leaving the coordinates a float resolves (WorldLimits); false for the engine on its own
+     * @return a failure or a refusal, or null when the state stayed finite
      */
-    static Verdict tick(World w, int ticks, LongConsumer before, Runnable after, String blameForNaN) {
+    static Verdict tick(World w, int ticks, LongConsumer before, Runnable after, String blameForNaN,
+                        boolean harnessRun) {
         String bad = nonFinite(w);
         if (bad != null) {
             return new Verdict(Outcome.SILENT_NAN, blameForNaN, "build", bad);
@@ -72,6 +76,10 @@ final class WorldState {
             bad = nonFinite(w);
             if (bad != null) {
                 return new Verdict(Outcome.SILENT_NAN, Verdict.ENGINE, "tick " + k, bad);
+            }
+            int far = harnessRun ? WorldLimits.farBody(w) : -1;
+            if (far >= 0) {
+                return Verdict.clean("tick " + k, "body " + far + " " + WorldLimits.far(w.getBody(far)));
             }
         }
         return null;

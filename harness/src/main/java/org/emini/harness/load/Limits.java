@@ -43,6 +43,27 @@ public final class Limits {
     /** Convex parts of one multi-shape, once named parts (which may nest) are placed. */
     public static final long SHAPE_PARTS = 1_000;
 
+    /**
+     * Pairs of bodies whose bounding boxes (of their bounding circles) overlap at the start: the engine
+     * collides them all in the first tick, and thousands of bodies piled on one spot make that tick
+     * quadratic or worse (the library's most is bench/rain-20000's 28,418).
+     */
+    public static final long STARTING_OVERLAPS = 200_000;
+
+    /**
+     * Coordinates (px) a dynamic body may have, at the start and after every tick. Beyond 10^7 a float
+     * no longer resolves a pixel, bodies collapse onto the same coordinates and the broadphase pairs
+     * them all (a pile falling for an hour, a gravity of 1e30): the run stops there instead.
+     */
+    public static final float POSITION = 1e7f;
+
+    /**
+     * Wall-clock seconds a scene's run may take by default ({@code run --scene-timeout}): the library's
+     * longest takes about a minute; a scene that piles pairs up (bodies moving many widths per tick)
+     * can take hours, and stops here with an error instead.
+     */
+    public static final double SCENE_SECONDS = 1800;
+
     /** Particles in all emitters' pools together. */
     public static final long PARTICLES = 1_000_000;
 }

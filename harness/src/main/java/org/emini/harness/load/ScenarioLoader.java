@@ -8,7 +8,10 @@ import java.util.List;
 import org.emini.harness.build.BuildRefusedException;
 import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.build.WorldBuilder;
+import org.emini.harness.build.WorldLimits;
 import org.emini.harness.convert.WorldToScenario;
+import org.emini.dynamics.World;
+import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.io.PhyFormatException;
 import org.emini.io.PhyReader;
@@ -132,8 +135,7 @@ public final class ScenarioLoader {
      */
     private static Problem buildProblem(String shown, Scenario scenario, SourceMap sourceMap) {
         try {
-            WorldBuilder.build(scenario);
-            return null;
+            return startProblem(shown, scenario, WorldBuilder.build(scenario).world(), sourceMap);
         } catch (BuildRefusedException e) {
             int[] at = sourceMap.locate(e.path());
             return new Problem(shown, at[0], at[1], e.path().toString(), "the engine refuses it: " + e.getMessage());
@@ -143,6 +145,29 @@ public final class ScenarioLoader {
             // Not a value the engine refused with a reason: a defect, shown as such (and found by harness fuzz).
             return new Problem(shown, 0, 0, "$", INTERNAL_ERROR + e);
         }
+    }
+
+    /** The starting world against the limits that need it built: positions, overlapping pairs. */
+    private static Problem startProblem(String shown, Scenario scenario, World world, SourceMap sourceMap) {
+        int far = WorldLimits.farBody(world);
+        if (far >= 0) {
+            return located(shown, scenario.bodies().get(far), sourceMap, "body '" + scenario.bodies().get(far).name()
+                    + "' " + WorldLimits.far(world.getBody(far)));
+        }
+        WorldLimits.Overlaps o = WorldLimits.startingOverlaps(world);
+        if (o.tooMany()) {
+            BodySpec worst = scenario.bodies().get(o.worst());
+            return located(shown, worst, sourceMap, (o.counted() ? "more than " + Limits.STARTING_OVERLAPS
+                    + " pairs of bodies overlap at the start (bounding boxes)" : "too many bodies share both an x and "
+                    + "a y range to count their overlaps") + ", more than the engine can collide at once; body '"
+                    + worst.name() + "' meets the most");
+        }
+        return null;
+    }
+
+    private static Problem located(String shown, BodySpec body, SourceMap sourceMap, String message) {
+        int[] at = sourceMap.locate(body.path());
+        return new Problem(shown, at[0], at[1], body.path().toString(), message);
     }
 
     /** The scene id: the path under the library without extension, or the file name elsewhere. */

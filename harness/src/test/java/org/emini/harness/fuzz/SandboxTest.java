@@ -10,14 +10,21 @@ import org.emini.harness.Repo;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The worker process is the fuzzer's safety: a hang is killed, a death or an OutOfMemoryError is a crash, and the next input gets a fresh worker. */
+/**
+ * The worker process is the fuzzer's safety: a hang is answered with where it was stuck and the worker
+ * replaced, a death or an OutOfMemoryError is a crash, and the next input gets a fresh worker.
+ */
 class SandboxTest {
     @Test
     void hangsDeathsAndOutOfMemoryAreClassifiedAndTheRunGoesOn(@TempDir Path dir) throws Exception {
         try (Sandbox s = new Sandbox(MisbehavingChecker.class.getName(), Repo.schema(), 1, "64m", Duration.ofSeconds(3),
                 dir.resolve("worker.log"))) {
             assertEquals(Outcome.CLEAN, run(s, "first").outcome());
-            assertEquals(Outcome.HANG, run(s, "hang").outcome());
+            Verdict hang = run(s, "hang");
+            assertEquals(Outcome.HANG, hang.outcome());
+            // The worker names where its check was stuck, and so whose the hang is.
+            assertTrue(hang.message().contains("MisbehavingChecker.check"), hang.message());
+            assertEquals(Verdict.HARNESS, hang.blame());
             assertEquals(Outcome.CLEAN, run(s, "after a hang").outcome());
             Verdict died = run(s, "die");
             assertEquals(Outcome.CRASH, died.outcome());

@@ -7,6 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import org.emini.harness.Scenes;
+import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.ScenarioRunner;
+import org.emini.harness.run.Status;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -165,5 +168,53 @@ class SizeLimitsTest {
                 "run: {duration: 1}"));
         assertEquals("$.actions[0].at", p.path());
         assertEquals(2, p.line());
+    }
+
+    /** A fuzz finding: boxes 99999 px tall in a pyramid all overlap; the first tick paired 12.7 million of them. */
+    @Test
+    void thousandsOfBodiesOverlappingAtTheStartAreRefused() {
+        Problem p = only(Scenes.load("tall.yaml",
+                "shapes: {box: {type: rectangle, width: 20, height: 99999}}",
+                "generators:",
+                "  - {type: pyramid, name: box, shape: box, base: [0, -10], rows: 100, spacing: [21, 20]}",
+                "run: {duration: 1, record: {bodies: none}}"));
+        assertEquals("$.generators[0]", p.path());
+        assertEquals(3, p.line());
+        assertTrue(p.message().contains("overlap at the start"), p.message());
+    }
+
+    @Test
+    void aBodyBeyondTheCoordinatesAFloatResolvesIsRefused() {
+        Problem p = only(Scenes.load("far.yaml",
+                "bodies: [{name: a, shape: {type: circle, radius: 1}, position: [2.0e7, 0]}]",
+                "run: {duration: 1}"));
+        assertEquals("$.bodies[0]", p.path());
+        assertTrue(p.message().contains("beyond"), p.message());
+    }
+
+    /**
+     * A fuzz finding: gravity 1e30 sent 20,000 bodies to 1e26 px in one tick, where they share float
+     * coordinates and the broadphase paired them all (a hang). The run now stops at the first tick a
+     * body leaves ±1e7 px, with an error naming it.
+     */
+    @Test
+    void theRunStopsWhenABodyLeavesTheCoordinatesAFloatResolves() {
+        SceneResult r = ScenarioRunner.run(Scenes.valid("g.yaml",
+                "world: {gravity: [0, 1.0e30]}",
+                "bodies: [{name: ball, shape: {type: circle, radius: 1}}]",
+                "run: {duration: 1}"), n -> { });
+        assertEquals(Status.ERROR, r.status());
+        assertTrue(r.message().startsWith("at tick 1: body 'ball' is at (0.0, "), r.message());
+        assertTrue(r.message().contains("beyond ±1.0E7 px"), r.message());
+    }
+
+    /** A run still ticking after its time limit stops with an error (a limit of a nanosecond: the first tick). */
+    @Test
+    void aRunOverItsTimeLimitStopsWithAnError() {
+        SceneResult r = ScenarioRunner.run(Scenes.valid("t.yaml",
+                "bodies: [{name: ball, shape: {type: circle, radius: 1}}]",
+                "run: {duration: 1}"), n -> { }, 1e-9);
+        assertEquals(Status.ERROR, r.status());
+        assertTrue(r.message().startsWith("over the time limit of 0 s at tick 1 of 20"), r.message());
     }
 }
