@@ -1,5 +1,6 @@
 package org.emini.io;
 
+import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
@@ -35,12 +36,28 @@ final class ReferenceWorlds {
         return null;
     }
 
-    /** The folder; skips the calling test with a clear message when it is absent. */
+    /**
+     * The folder. When it is absent the calling test fails, unless the skip was asked for: the
+     * environment variable EMINI_SKIP_REFERENCE_WORLDS=1 or -Demini.skipReferenceWorlds=true. A test
+     * that passes because its inputs are missing tests nothing.
+     */
     static Path require() {
         Path folder = folder();
-        assumeTrue(folder != null, "reference worlds not found: expected ../shared/reference/worlds beside the "
-                + "repository (or -Demini.worlds=DIR); skipping the tests on the original's files");
-        return folder;
+        if (folder != null) {
+            return folder;
+        }
+        String where = "reference worlds not found: expected ../shared/reference/worlds beside the repository"
+                + " (or -Demini.worlds=DIR)";
+        if (skipAsked()) {
+            assumeTrue(false, where + "; skipped as asked (EMINI_SKIP_REFERENCE_WORLDS)");
+        }
+        return fail(where + "; to run without them, set EMINI_SKIP_REFERENCE_WORLDS=1");
+    }
+
+    /** Whether the tests on the original's files may be skipped when the folder is absent. */
+    static boolean skipAsked() {
+        return "1".equals(System.getenv("EMINI_SKIP_REFERENCE_WORLDS"))
+                || Boolean.getBoolean("emini.skipReferenceWorlds");
     }
 
     static byte[] bytes(String name) {
@@ -51,16 +68,21 @@ final class ReferenceWorlds {
         }
     }
 
-    /** Every file in the folder, sorted by name; empty when the folder is absent. */
+    /**
+     * Every file in the folder, sorted by name. When it is absent: empty if the skip was asked for
+     * (tests over generated files still run; a test of a reference file skips in {@link #require}),
+     * otherwise the calling test fails.
+     */
     static List<Path> all() {
-        Path folder = folder();
+        if (folder() == null && skipAsked()) {
+            return new ArrayList<>();
+        }
+        Path folder = require();
         List<Path> files = new ArrayList<>();
-        if (folder != null) {
-            try (Stream<Path> s = Files.list(folder)) {
-                s.filter(Files::isRegularFile).sorted().forEach(files::add);
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
+        try (Stream<Path> s = Files.list(folder)) {
+            s.filter(Files::isRegularFile).sorted().forEach(files::add);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
         return files;
     }

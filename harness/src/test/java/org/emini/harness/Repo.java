@@ -1,6 +1,9 @@
 package org.emini.harness;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
+import org.junit.jupiter.api.Assertions;
+import org.junit.jupiter.api.Assumptions;
 
 /** Paths of the repository the tests run in (set by Surefire; falls back to the working directory's parent). */
 public final class Repo {
@@ -21,5 +24,25 @@ public final class Repo {
     /** The scenario schema. */
     public static Path schema() {
         return scenarios().resolve("scenario.schema.json");
+    }
+
+    /**
+     * The original World Designer's files, {@code ../shared/reference/worlds} beside the repository (or
+     * {@code -Demini.worlds=DIR}). When the folder is absent the calling test fails, unless the skip was
+     * asked for (EMINI_SKIP_REFERENCE_WORLDS=1 or -Demini.skipReferenceWorlds=true): a test that passes
+     * because its inputs are missing tests nothing.
+     */
+    public static Path referenceWorlds() {
+        String override = System.getProperty("emini.worlds");
+        Path dir = (override != null ? Path.of(override) : root().resolve("../shared/reference/worlds"))
+                .toAbsolutePath().normalize();
+        if (Files.isDirectory(dir)) {
+            return dir;
+        }
+        String where = "reference worlds not found at " + dir;
+        if ("1".equals(System.getenv("EMINI_SKIP_REFERENCE_WORLDS")) || Boolean.getBoolean("emini.skipReferenceWorlds")) {
+            Assumptions.abort(where + "; skipped as asked (EMINI_SKIP_REFERENCE_WORLDS)");
+        }
+        return Assertions.fail(where + "; to run without them, set EMINI_SKIP_REFERENCE_WORLDS=1");
     }
 }

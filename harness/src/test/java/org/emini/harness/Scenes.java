@@ -1,6 +1,7 @@
 package org.emini.harness;
 
 import java.nio.file.Path;
+import org.emini.harness.load.Problem;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.load.SchemaCheck;
 import org.emini.harness.scenario.Scenario;
@@ -32,6 +33,14 @@ public final class Scenes {
             throw new AssertionError("expected a valid scene, got " + loaded.problems());
         }
         return loaded.scenario();
+    }
+
+    /** The one problem of a scene that must be refused for exactly one reason. */
+    public static Problem onlyProblem(ScenarioLoader.Loaded loaded) {
+        if (loaded.ok() || loaded.problems().size() != 1) {
+            throw new AssertionError("expected exactly one problem, got " + (loaded.ok() ? "a valid scene" : loaded.problems()));
+        }
+        return loaded.problems().get(0);
     }
 
     private static String stem(String file) {

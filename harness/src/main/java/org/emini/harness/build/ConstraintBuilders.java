@@ -5,9 +5,13 @@ import org.emini.constraint.Joint;
 import org.emini.constraint.Motor;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
+import org.emini.harness.load.JsonPath;
 import org.emini.harness.scenario.Section;
 
-/** Builders of the constraint sections: joints, springs and motors, through the engine's public API. */
+/**
+ * Builders of the constraint sections: joints, springs and motors, through the engine's public API.
+ * Which joined bodies may not collide is {@link CollisionBits}'s work, done before these run.
+ */
 final class ConstraintBuilders {
     private ConstraintBuilders() {
     }
@@ -20,32 +24,26 @@ final class ConstraintBuilders {
         return (float) v.get(1).asDouble();
     }
 
-    /**
-     * Joints that may not collide get a layer bit of their own, counted from 31 down and reused after
-     * 32 joints: neighbours in a chain never share one, which is all a chain needs.
-     */
+    /** Pin joints, or fixed joints that also lock the relative angle. */
     static final class Joints implements ElementBuilder {
         @Override
         public void build(Section section, BuiltWorld world) {
-            int index = 0;
-            for (JsonNode j : section.node()) {
+            for (int i = 0; i < section.node().size(); i++) {
+                JsonNode j = section.node().get(i);
+                JsonPath p = section.path().index(i);
                 Body a = world.body(j.get("bodyA").asText());
                 Body b = world.body(j.get("bodyB").asText());
                 boolean fixed = j.path("fixed").asBoolean(false);
-                Joint joint;
-                if (j.has("at")) {
-                    joint = Joint.atWorldPoint(a, b, x(j.get("at")), y(j.get("at")), fixed);
-                } else {
+                Joint joint = Located.at(p, () -> {
+                    if (j.has("at")) {
+                        return Joint.atWorldPoint(a, b, x(j.get("at")), y(j.get("at")), fixed);
+                    }
                     JsonNode pa = j.path("anchorA");
                     JsonNode pb = j.path("anchorB");
-                    joint = new Joint(a, b, pa.isArray() ? x(pa) : 0f, pa.isArray() ? y(pa) : 0f,
+                    return new Joint(a, b, pa.isArray() ? x(pa) : 0f, pa.isArray() ? y(pa) : 0f,
                         pb.isArray() ? x(pb) : 0f, pb.isArray() ? y(pb) : 0f, fixed);
-                }
-                if (!j.path("collide").asBoolean(false)) {
-                    joint.setCollisionLayer(31 - index % 32);
-                }
+                });
                 world.world().addConstraint(joint);
-                index++;
             }
         }
     }
@@ -54,8 +52,9 @@ final class ConstraintBuilders {
     static final class Springs implements ElementBuilder {
         @Override
         public void build(Section section, BuiltWorld world) {
-            int index = 0;
-            for (JsonNode s : section.node()) {
+            for (int i = 0; i < section.node().size(); i++) {
+                JsonNode s = section.node().get(i);
+                JsonPath p = section.path().index(i);
                 Body a = world.body(s.get("bodyA").asText());
                 Body b = world.body(s.get("bodyB").asText());
                 JsonNode pa = s.path("anchorA");
@@ -64,19 +63,15 @@ final class ConstraintBuilders {
                 float ay = pa.isArray() ? y(pa) : 0f;
                 float bx = pb.isArray() ? x(pb) : 0f;
                 float by = pb.isArray() ? y(pb) : 0f;
-                Spring spring = s.has("restLength")
+                Spring spring = Located.at(p, () -> s.has("restLength")
                     ? new Spring(a, b, ax, ay, bx, by, (float) s.get("restLength").asDouble())
-                    : new Spring(a, b, ax, ay, bx, by);
+                    : new Spring(a, b, ax, ay, bx, by));
                 float k = (float) s.path("stiffness").asDouble(0);
                 if (k > 0f) {
-                    spring.setCoefficient(k);
-                    spring.setDamping((float) s.path("damping").asDouble(0));
-                }
-                if (!s.path("collide").asBoolean(true)) {
-                    spring.setCollisionLayer(index % 32);
+                    Located.at(p.key("stiffness"), () -> spring.setCoefficient(k));
+                    Located.at(p.key("damping"), () -> spring.setDamping((float) s.path("damping").asDouble(0)));
                 }
                 world.world().addConstraint(spring);
-                index++;
             }
         }
     }
@@ -86,12 +81,13 @@ final class ConstraintBuilders {
         @Override
         public void build(Section section, BuiltWorld world) {
             float dt = world.world().getTimestep();
-            for (JsonNode m : section.node()) {
+            for (int i = 0; i < section.node().size(); i++) {
+                JsonNode m = section.node().get(i);
                 Body body = world.body(m.get("body").asText());
                 float max = (float) m.get("maxImpulse").asDouble() / dt;
-                Motor motor = m.has("velocity")
+                Motor motor = Located.at(section.path().index(i), () -> m.has("velocity")
                     ? new Motor(body, x(m.get("velocity")), y(m.get("velocity")), max)
-                    : new Motor(body, (float) m.path("angularVelocity").asDouble(0), max);
+                    : new Motor(body, (float) m.path("angularVelocity").asDouble(0), max));
                 world.world().addConstraint(motor);
             }
         }

@@ -21,8 +21,10 @@ final class LandscapeBuilder implements ElementBuilder {
         JsonNode n = section.node();
         SectionKeys.only("landscape", n, section.path(), KEYS);
         Landscape landscape = world.world().getLandscape();
-        landscape.setFriction((float) n.path("friction").asDouble(Landscape.DEFAULT_FRICTION));
-        landscape.setElasticity((float) n.path("elasticity").asDouble(Landscape.DEFAULT_ELASTICITY));
+        Located.at(section.path().key("friction"),
+                () -> landscape.setFriction((float) n.path("friction").asDouble(Landscape.DEFAULT_FRICTION)));
+        Located.at(section.path().key("elasticity"),
+                () -> landscape.setElasticity((float) n.path("elasticity").asDouble(Landscape.DEFAULT_ELASTICITY)));
         JsonNode segments = n.get("segments");
         for (int i = 0; i < segments.size(); i++) {
             JsonNode s = segments.get(i);
@@ -30,8 +32,8 @@ final class LandscapeBuilder implements ElementBuilder {
             SectionKeys.only("landscape segment", s, p, SEGMENT_KEYS);
             JsonNode from = s.get("from");
             JsonNode to = s.get("to");
-            landscape.addSegment((float) from.get(0).asDouble(), (float) from.get(1).asDouble(),
-                    (float) to.get(0).asDouble(), (float) to.get(1).asDouble(), face(s.path("face").asText("none")));
+            Located.at(p, () -> landscape.addSegment((float) from.get(0).asDouble(), (float) from.get(1).asDouble(),
+                    (float) to.get(0).asDouble(), (float) to.get(1).asDouble(), face(s.path("face").asText("none"))));
         }
     }
 

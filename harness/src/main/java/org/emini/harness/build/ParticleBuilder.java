@@ -28,19 +28,19 @@ final class ParticleBuilder implements ElementBuilder {
             JsonPath path = section.path().index(i);
             SectionKeys.only("particles", n, path, KEYS);
             Body body = n.has("body") ? world.body(n.get("body").asText()) : null;
-            ParticleEmitter e = new ParticleEmitter(n.path("maxCount").asInt(100), body);
+            ParticleEmitter e = Located.at(path.key("maxCount"), () -> new ParticleEmitter(n.path("maxCount").asInt(100), body));
             JsonNode from = n.get("from");
             JsonNode to = n.has("to") ? n.get("to") : from;
-            e.setEmitSegment(f(from.get(0)), f(from.get(1)), f(to.get(0)), f(to.get(1)));
-            e.setCreationRate(num(n, "rate", 20), num(n, "rateSpread", 0));
-            e.setLifetime(num(n, "lifetime", 2), num(n, "lifetimeSpread", 0));
-            e.setSpeed(num(n, "speed", 10), num(n, "speedSpread", 0));
-            e.setAngle((float) Math.toRadians(n.path("angleDeg").asDouble(0)),
-                    (float) Math.toRadians(n.path("angleSpreadDeg").asDouble(0)));
+            Located.at(path.key("from"), () -> e.setEmitSegment(f(from.get(0)), f(from.get(1)), f(to.get(0)), f(to.get(1))));
+            Located.at(path.key("rate"), () -> e.setCreationRate(num(n, "rate", 20), num(n, "rateSpread", 0)));
+            Located.at(path.key("lifetime"), () -> e.setLifetime(num(n, "lifetime", 2), num(n, "lifetimeSpread", 0)));
+            Located.at(path.key("speed"), () -> e.setSpeed(num(n, "speed", 10), num(n, "speedSpread", 0)));
+            Located.at(path.key("angleDeg"), () -> e.setAngle((float) Math.toRadians(n.path("angleDeg").asDouble(0)),
+                    (float) Math.toRadians(n.path("angleSpreadDeg").asDouble(0))));
             e.setAxesFixed(n.path("axesFixed").asBoolean(false));
-            e.setElasticity(num(n, "elasticity", 1));
-            e.setGravityFactor(num(n, "gravityFactor", 1));
-            e.setDamping(num(n, "damping", 0));
+            Located.at(path.key("elasticity"), () -> e.setElasticity(num(n, "elasticity", 1)));
+            Located.at(path.key("gravityFactor"), () -> e.setGravityFactor(num(n, "gravityFactor", 1)));
+            Located.at(path.key("damping"), () -> e.setDamping(num(n, "damping", 0)));
             e.setCanCollide(n.path("collide").asBoolean(true));
             e.setSeed(n.has("seed") ? n.get("seed").asLong() : ParticleEmitter.DEFAULT_SEED + i);
             world.world().addParticleEmitter(e);

@@ -27,19 +27,16 @@ import org.emini.shape.Shape;
 public final class ShapeFactory {
     private final Map<ShapeSpec, Shape> made = new IdentityHashMap<>();
 
-    /**
-     * The engine shape of a spec: made once, then the same object for every body that uses it.
-     *
-     * @throws UnsupportedElementException never today; kept for shapes the engine cannot express
-     */
-    public Shape shape(ShapeSpec spec) throws UnsupportedElementException {
+    /** The engine shape of a spec: made once, then the same object for every body that uses it. */
+    public Shape shape(ShapeSpec spec) {
         Shape shape = made.get(spec);
         if (shape == null) {
-            shape = spec.kind() == ShapeSpec.Kind.multiShape ? multi(spec) : create(spec);
-            shape.setMass((float) spec.mass());
-            shape.setFriction((float) spec.friction());
-            shape.setElasticity((float) spec.elasticity());
-            made.put(spec, shape);
+            Shape s = Located.at(spec.path(), () -> spec.kind() == ShapeSpec.Kind.multiShape ? multi(spec) : create(spec));
+            Located.at(spec.path().key("mass"), () -> s.setMass((float) spec.mass()));
+            Located.at(spec.path().key("friction"), () -> s.setFriction((float) spec.friction()));
+            Located.at(spec.path().key("elasticity"), () -> s.setElasticity((float) spec.elasticity()));
+            made.put(spec, s);
+            shape = s;
         }
         return shape;
     }
@@ -85,12 +82,12 @@ public final class ShapeFactory {
             }
             return;
         }
-        Shape base = create(spec);
-        Shape placed;
+        Shape base = Located.at(spec.path(), () -> create(spec));
+        final Shape placed;
         double c = Math.cos(angle);
         double s = Math.sin(angle);
         if (base instanceof Circle circle) {
-            placed = new Circle(circle.getRadius(), (float) ox, (float) oy);
+            placed = Located.at(spec.path(), () -> new Circle(circle.getRadius(), (float) ox, (float) oy));
         } else {
             Polygon polygon = (Polygon) base;
             float[] xy = new float[2 * polygon.getVertexCount()];
@@ -100,9 +97,9 @@ public final class ShapeFactory {
                 xy[2 * i] = (float) (ox + c * x - s * y);
                 xy[2 * i + 1] = (float) (oy + s * x + c * y);
             }
-            placed = Shape.createPolygon(xy);
+            placed = Located.at(spec.path(), () -> Shape.createPolygon(xy));
         }
-        placed.setMass((float) (spec.mass() * scale));
+        Located.at(spec.path().key("mass"), () -> placed.setMass((float) (spec.mass() * scale)));
         out.add(placed);
     }
 }

@@ -18,11 +18,14 @@ final class SimulationAreaBuilder implements ElementBuilder {
     public void build(Section section, BuiltWorld world) throws UnsupportedElementException {
         JsonNode n = section.node();
         SectionKeys.only("world.simulationArea", n, section.path(), KEYS);
-        if (n.has("min")) {
-            world.world().setSimulationArea((float) n.get("min").get(0).asDouble(), (float) n.get("min").get(1).asDouble(),
-                    (float) n.get("max").get(0).asDouble(), (float) n.get("max").get(1).asDouble());
-        } else {
-            world.world().setSimulationArea((float) n.get("start").asDouble(), (float) n.get("end").asDouble());
-        }
+        Located.at(section.path(), () -> {
+            if (n.has("min")) {
+                world.world().setSimulationArea((float) n.get("min").get(0).asDouble(),
+                        (float) n.get("min").get(1).asDouble(), (float) n.get("max").get(0).asDouble(),
+                        (float) n.get("max").get(1).asDouble());
+            } else {
+                world.world().setSimulationArea((float) n.get("start").asDouble(), (float) n.get("end").asDouble());
+            }
+        });
     }
 }

@@ -1,14 +1,17 @@
 package org.emini.harness.build;
 
+import java.util.List;
 import java.util.Map;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.SolverSettings;
 import org.emini.dynamics.World;
+import org.emini.harness.load.JsonPath;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.BodyState;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.Section;
 import org.emini.harness.scenario.WorldSpec;
+import org.emini.shape.Shape;
 
 /**
  * Builds an engine world from a scene through the engine's public API only, in the order a program
@@ -22,7 +25,8 @@ public final class WorldBuilder {
      * Builds the world.
      *
      * @throws UnsupportedElementException if the scene uses something the engine cannot express
-     * @throws IllegalArgumentException if the engine refuses a value (an invalid polygon, ...)
+     * @throws BuildRefusedException if the engine refuses a value (an invalid polygon, ...), naming where the
+     *     scene writes it
      */
     public static BuiltWorld build(Scenario scenario) throws UnsupportedElementException {
         Map<String, ElementBuilder> builders = ElementBuilders.all();
@@ -40,6 +44,7 @@ public final class WorldBuilder {
             world.addBody(body);
             built.add(spec.name(), body);
         }
+        CollisionBits.apply(built);
         for (Map.Entry<String, ElementBuilder> e : builders.entrySet()) {
             Section section = scenario.elements().get(e.getKey());
             if (section != null) {
@@ -50,43 +55,56 @@ public final class WorldBuilder {
     }
 
     static void settings(World world, WorldSpec w) {
-        world.setTimestep((float) w.timestep());
-        world.setConstraintIterations(w.iterations());
+        JsonPath p = JsonPath.ROOT.key("world");
+        Located.at(p, () -> world.setTimestep((float) w.timestep()));
+        Located.at(p.key("iterations"), () -> world.setConstraintIterations(w.iterations()));
         world.setConstraintIterationDynamic(w.dynamicIterations());
-        world.setGravity((float) w.gravityX(), (float) w.gravityY());
-        world.setDampingLateral((float) w.dampingLateral());
-        world.setDampingRotational((float) w.dampingRotational());
+        Located.at(p.key("gravity"), () -> world.setGravity((float) w.gravityX(), (float) w.gravityY()));
+        Located.at(p.key("damping").key("lateral"), () -> world.setDampingLateral((float) w.dampingLateral()));
+        Located.at(p.key("damping").key("rotational"), () -> world.setDampingRotational((float) w.dampingRotational()));
         SolverSettings s = world.getSolverSettings();
         for (Map.Entry<String, Double> e : w.solver().entrySet()) {
             float v = e.getValue().floatValue();
-            switch (e.getKey()) {
-                case "linearSlop" -> s.setLinearSlop(v);
-                case "speculativeDistance" -> s.setSpeculativeDistance(v);
-                case "aabbMargin" -> s.setAabbMargin(v);
-                case "contactHertz" -> s.setContactHertz(v);
-                case "contactDampingRatio" -> s.setContactDampingRatio(v);
-                case "contactPushMaxVelocity" -> s.setContactPushMaxVelocity(v);
-                case "restitutionThreshold" -> s.setRestitutionThreshold(v);
-                case "convergenceTolerance" -> s.setConvergenceTolerance(v);
-                case "impactTolerance" -> s.setImpactTolerance(v);
-                case "impactRelaxPasses" -> s.setImpactRelaxPasses(Math.round(v));
-                default -> throw new IllegalArgumentException("unknown solver setting " + e.getKey());
-            }
+            Located.at(p.key("solver").key(e.getKey()), () -> solver(s, e.getKey(), v));
         }
     }
 
-    private static Body body(BodySpec spec, ShapeFactory shapes) throws UnsupportedElementException {
+    private static void solver(SolverSettings s, String key, float v) {
+        switch (key) {
+            case "linearSlop" -> s.setLinearSlop(v);
+            case "speculativeDistance" -> s.setSpeculativeDistance(v);
+            case "aabbMargin" -> s.setAabbMargin(v);
+            case "contactHertz" -> s.setContactHertz(v);
+            case "contactDampingRatio" -> s.setContactDampingRatio(v);
+            case "contactPushMaxVelocity" -> s.setContactPushMaxVelocity(v);
+            case "restitutionThreshold" -> s.setRestitutionThreshold(v);
+            case "convergenceTolerance" -> s.setConvergenceTolerance(v);
+            case "impactTolerance" -> s.setImpactTolerance(v);
+            case "impactRelaxPasses" -> s.setImpactRelaxPasses(Math.round(v));
+            default -> throw new IllegalArgumentException("unknown solver setting " + key);
+        }
+    }
+
+    private static Body body(BodySpec spec, ShapeFactory shapes) {
         BodyState s = spec.state();
-        Body body = new Body((float) spec.x(), (float) spec.y(), shapes.shape(spec.shape()), !s.isStatic());
+        Shape shape = shapes.shape(spec.shape());
+        // A written body's values have their own keys; a generated body's come from its generator.
+        boolean written = spec.path().parent().elements().equals(List.of("bodies"));
+        Body body = Located.at(written ? spec.path().key("position") : spec.path(),
+                () -> new Body((float) spec.x(), (float) spec.y(), shape, !s.isStatic()));
         body.setRotatable(s.rotatable());
         body.setInteracting(s.interacting());
         body.setGravityAffected(s.gravity());
         for (int layer : s.layers()) {
-            body.addCollisionLayer(layer);
+            Located.at(key(spec, written, "layers"), () -> body.addCollisionLayer(layer));
         }
-        body.setAngle((float) s.angle());
-        body.setVelocity((float) s.vx(), (float) s.vy());
-        body.setAngularVelocity((float) s.angularVelocity());
+        Located.at(key(spec, written, "angle"), () -> body.setAngle((float) s.angle()));
+        Located.at(key(spec, written, "velocity"), () -> body.setVelocity((float) s.vx(), (float) s.vy()));
+        Located.at(key(spec, written, "angularVelocity"), () -> body.setAngularVelocity((float) s.angularVelocity()));
         return body;
+    }
+
+    private static JsonPath key(BodySpec spec, boolean written, String key) {
+        return written ? spec.path().key(key) : spec.path().key("body").key(key);
     }
 }

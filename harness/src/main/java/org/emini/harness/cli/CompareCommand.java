@@ -83,11 +83,7 @@ final class CompareCommand implements Callable<Integer> {
             return 0;
         }
         ScenarioLoader loader = library.loader();
-        List<Path> files = ScenarioFiles.expand(paths == null || paths.isEmpty() ? List.of(library.root()) : paths);
-        if (files.isEmpty()) {
-            System.err.println("compare: no scene or world files under " + paths);
-            return 1;
-        }
+        List<Path> files = library.files(spec, paths);
         files = scenesForTheOracle(files);
         List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
         List<Path> valid = new ArrayList<>();
@@ -98,7 +94,7 @@ final class CompareCommand implements Callable<Integer> {
                 valid.add(f);
             }
         }
-        int threads = Math.max(1, jobs != null ? jobs : Runtime.getRuntime().availableProcessors());
+        int threads = jobs != null ? Options.atLeast(spec, "--jobs", jobs, 1) : Runtime.getRuntime().availableProcessors();
         Path oracleTraces = reports.resolve("traces").resolve("pymunk");
         Path engineTraces = reports.resolve("traces").resolve("emini");
         OracleRunner.Run oracleRun = valid.isEmpty() ? null

@@ -8,8 +8,10 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.emini.harness.convert.ScenarioToWorld;
 import org.emini.harness.convert.WorldToScenario;
+import org.emini.harness.load.IoText;
 import org.emini.harness.load.Problem;
 import org.emini.harness.load.ScenarioLoader;
+import org.emini.io.PhyFormatException;
 import org.emini.io.PhyReader;
 import org.emini.io.PhyWorld;
 import org.emini.io.PhyWriter;
@@ -49,9 +51,13 @@ final class ConvertCommand implements Callable<Integer> {
         boolean scene = lower.endsWith(".yaml") || lower.endsWith(".yml") || lower.endsWith(".json");
         try {
             return scene ? toWorld(file) : toScene(file);
-        } catch (IOException e) {
-            System.err.println(input + ": " + e.getMessage());
+        } catch (PhyFormatException e) {
+            System.err.println(input + ": not a valid world file: " + e.getMessage());
             return 1;
+        } catch (IOException e) {
+            // A missing or unreadable input (or output) is the command's failure, not the file's content.
+            System.err.println("harness convert: " + IoText.describe(e));
+            return ExitStatus.IO;
         }
     }
 

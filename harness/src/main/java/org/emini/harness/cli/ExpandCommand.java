@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.emini.harness.load.Problem;
-import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.scenario.BodySpec;
@@ -18,6 +17,8 @@ import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.ShapeSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Parameters;
 
 /**
@@ -31,6 +32,9 @@ final class ExpandCommand implements Callable<Integer> {
     @Mixin
     Library library;
 
+    @Spec
+    CommandSpec spec;
+
     @Parameters(paramLabel = "PATHS", arity = "1..*", description = "Scene files or folders.")
     List<Path> paths;
 
@@ -42,7 +46,7 @@ final class ExpandCommand implements Callable<Integer> {
         JsonWriter json = new JsonWriter(out);
         json.setIndent(" ");
         json.beginArray();
-        for (Path file : ScenarioFiles.expand(paths)) {
+        for (Path file : library.files(spec, paths)) {
             ScenarioLoader.Loaded loaded = loader.load(file);
             if (!loaded.ok()) {
                 invalid++;

@@ -2,18 +2,25 @@ package org.emini.harness.cli;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.load.SchemaCheck;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 
 /** Options shared by the commands: where the schema (and so the scenario library) is. */
-final class Library {
+public final class Library {
+    @picocli.CommandLine.Spec(picocli.CommandLine.Spec.Target.MIXEE)
+    CommandSpec spec;
+
     @Option(names = "--schema", paramLabel = "FILE",
             description = "The scenario schema (default: scenarios/scenario.schema.json in this or a parent folder).")
     Path schema;
 
     /** The schema file, found upward from the working directory when not given. */
-    Path schemaFile() {
+    public Path schemaFile() {
         if (schema != null) {
             return schema;
         }
@@ -23,15 +30,32 @@ final class Library {
                 return candidate;
             }
         }
-        throw new IllegalStateException("cannot find scenarios/scenario.schema.json here or above; give --schema");
+        throw new ParameterException(spec.commandLine(),
+                "cannot find scenarios/scenario.schema.json here or above; give --schema");
     }
 
     /** The library folder (the schema's folder): scene ids are paths relative to it. */
-    Path root() {
+    public Path root() {
         return schemaFile().toAbsolutePath().getParent();
     }
 
-    ScenarioLoader loader() {
+    /**
+     * The scene files under PATHS (the library when none are given). A folder that holds none is a
+     * usage error: a run of nothing must not pass.
+     */
+    public List<Path> files(CommandSpec spec, List<Path> paths) {
+        List<Path> given = paths == null || paths.isEmpty() ? List.of(root()) : paths;
+        for (Path p : given) {
+            if (Files.isDirectory(p) && ScenarioFiles.expand(List.of(p)).isEmpty()) {
+                throw new ParameterException(spec.commandLine(), "no scene files in " + p
+                        + " (looked for *.yaml, *.yml, *.json, *.phy and *.world)");
+            }
+        }
+        return ScenarioFiles.expand(given);
+    }
+
+    /** The library's loader. */
+    public ScenarioLoader loader() {
         return new ScenarioLoader(SchemaCheck.fromFile(schemaFile()), root());
     }
 }

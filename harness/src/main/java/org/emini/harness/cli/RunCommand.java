@@ -29,6 +29,8 @@ import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.run.Status;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -41,6 +43,9 @@ import picocli.CommandLine.Parameters;
 final class RunCommand implements Callable<Integer> {
     @Mixin
     Library library;
+
+    @Spec
+    CommandSpec spec;
 
     @Parameters(paramLabel = "PATHS", arity = "0..*", description = "Scene files or folders (default: the library).")
     List<Path> paths;
@@ -55,6 +60,10 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--jobs", paramLabel = "N", description = "Scenes run in parallel (default: the number of cores).")
     Integer jobs;
 
+    @Option(names = "--scene-timeout", paramLabel = "SECONDS", defaultValue = "1800",
+            description = "Wall-clock time a scene may run before it stops as ERROR (default: ${DEFAULT-VALUE}).")
+    double sceneTimeout;
+
     @Option(names = "--progress", negatable = true,
             description = "Show a progress bar (default: when the output is a terminal).")
     Boolean progress;
@@ -62,8 +71,14 @@ final class RunCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         long start = System.nanoTime();
+        if (jobs != null) {
+            Options.atLeast(spec, "--jobs", jobs, 1);
+        }
+        Options.require(spec, sceneTimeout > 0, "--scene-timeout must be > 0, was " + sceneTimeout);
+        // Made first, so that reports under a file fail now, not after the run.
+        Files.createDirectories(reports);
         ScenarioLoader loader = library.loader();
-        List<Path> files = ScenarioFiles.expand(paths == null || paths.isEmpty() ? List.of(library.root()) : paths);
+        List<Path> files = library.files(spec, paths);
         List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
         long totalTicks = 0;
         int width = 10;
@@ -77,7 +92,7 @@ final class RunCommand implements Callable<Integer> {
         }
         Path traces = noTraces ? null : reports.resolve("traces");
         boolean bar = progress != null ? progress : System.console() != null;
-        int threads = Math.max(1, jobs != null ? jobs : Runtime.getRuntime().availableProcessors());
+        int threads = jobs != null ? jobs : Runtime.getRuntime().availableProcessors();
         List<SceneResult> results = new ArrayList<>();
         ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
             Thread t = new Thread(r, "scene");
@@ -89,7 +104,7 @@ final class RunCommand implements Callable<Integer> {
             LongConsumer ticks = pb == null ? n -> { } : pb::stepBy;
             List<Future<SceneResult>> futures = new ArrayList<>();
             for (ScenarioLoader.Loaded l : loaded) {
-                futures.add(pool.submit(() -> finish(l, ticks, traces)));
+                futures.add(pool.submit(() -> finish(l, ticks, traces, sceneTimeout)));
             }
             for (Future<SceneResult> f : futures) {
                 SceneResult r = get(f);
@@ -113,7 +128,7 @@ final class RunCommand implements Callable<Integer> {
     }
 
     /** Runs one loaded scene (or reports why it cannot), writes its trace and drops it from memory. */
-    private static SceneResult finish(ScenarioLoader.Loaded l, LongConsumer ticks, Path traces) {
+    private static SceneResult finish(ScenarioLoader.Loaded l, LongConsumer ticks, Path traces, double timeout) {
         if (!l.ok()) {
             StringBuilder msg = new StringBuilder("invalid scene:");
             for (Problem p : l.problems()) {
@@ -122,7 +137,7 @@ final class RunCommand implements Callable<Integer> {
             return new SceneResult(l.file().toString(), l.file().toString(), null, Status.ERROR, msg.toString(),
                     List.of(), List.of(), null, 0, 0, 0, 0, 0, null);
         }
-        SceneResult r = ScenarioRunner.run(l.scenario(), ticks);
+        SceneResult r = ScenarioRunner.run(l.scenario(), ticks, timeout);
         if (traces != null && r.trace() != null && l.scenario().run().record().trace()) {
             try {
                 TraceWriter.write(TraceWriter.fileFor(traces, r.scene()), r.scene(), "emini", r.trace());

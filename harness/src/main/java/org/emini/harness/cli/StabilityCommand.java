@@ -22,6 +22,8 @@ import org.emini.harness.sweep.SweepBackend;
 import org.emini.harness.sweep.SweepGrid;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 
 /** {@code stability}: stability maps (parameter against timestep) of stiff and extreme families. */
@@ -30,6 +32,9 @@ import picocli.CommandLine.Option;
 final class StabilityCommand implements Callable<Integer> {
     @Mixin
     Library library;
+
+    @Spec
+    CommandSpec spec;
 
     @Option(names = "--reports", paramLabel = "DIR", defaultValue = "reports/stability",
             description = "Where stability.json goes (default: ${DEFAULT-VALUE}).")
@@ -58,13 +63,19 @@ final class StabilityCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        String[] r = rates.split("\\.\\.");
-        SweepGrid grid = SweepGrid.of(Integer.parseInt(r[0].trim()), Integer.parseInt(r[r.length - 1].trim()), List.of(iterations));
+        SweepGrid grid = Options.grid(spec, rates, List.of(iterations));
         List<StabilityFamily> chosen = new ArrayList<>();
         for (StabilityFamily f : StabilityFamily.all()) {
             if (families == null || families.contains(f.name())) {
                 chosen.add(f);
             }
+        }
+        List<String> known = StabilityFamily.all().stream().map(StabilityFamily::name).toList();
+        for (String f : families == null ? List.<String>of() : families) {
+            Options.require(spec, known.contains(f), "--families: unknown family " + f + " (" + String.join(", ", known) + ")");
+        }
+        for (String e : engines) {
+            Options.require(spec, e.equals("emini") || e.equals("pymunk"), "--engines: unknown engine " + e + " (emini, pymunk)");
         }
         List<SweepBackend> backends = new ArrayList<>();
         OracleBackend pymunk = null;

@@ -8,7 +8,6 @@ import java.util.concurrent.Callable;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
-import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.sweep.EngineBackend;
 import org.emini.harness.sweep.OracleBackend;
@@ -20,6 +19,9 @@ import org.emini.harness.sweep.SweepPoint;
 import org.emini.harness.sweep.WorkPrecisionPlots;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -32,6 +34,9 @@ import picocli.CommandLine.Parameters;
 final class SweepCommand implements Callable<Integer> {
     @Mixin
     Library library;
+
+    @Spec
+    CommandSpec spec;
 
     @Parameters(paramLabel = "PATHS", arity = "1..*", description = "Scene files or folders.")
     List<Path> paths;
@@ -82,20 +87,25 @@ final class SweepCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (!plotCost.equals("wall") && !plotCost.equals("cpu")) {
-            throw new IllegalArgumentException("--plot-cost " + plotCost + ": wall or cpu");
-        }
+        Options.require(spec, plotCost.equals("wall") || plotCost.equals("cpu"), "--plot-cost " + plotCost + ": wall or cpu");
+        Options.atLeast(spec, "--repeats", repeats, 1);
         String[] kn = shard.split("/");
-        int k = Integer.parseInt(kn[0].trim());
-        int n = Integer.parseInt(kn[1].trim());
-        if (n < 1 || k < 1 || k > n) {
-            throw new IllegalArgumentException("--shard " + shard + ": K must be in 1..N");
+        int k;
+        int n;
+        try {
+            k = Integer.parseInt(kn[0].trim());
+            n = Integer.parseInt(kn[kn.length - 1].trim());
+        } catch (NumberFormatException e) {
+            throw new ParameterException(spec.commandLine(), "--shard " + shard + ": K/N, two whole numbers");
         }
-        String[] r = rates.split("\\.\\.");
-        SweepGrid grid = SweepGrid.of(Integer.parseInt(r[0].trim()), Integer.parseInt(r[r.length - 1].trim()), iterations);
+        Options.require(spec, kn.length == 2 && n >= 1 && k >= 1 && k <= n, "--shard " + shard + ": K must be in 1..N");
+        for (String e : engines) {
+            Options.require(spec, e.equals("emini") || e.equals("pymunk"), "--engines: unknown engine " + e + " (emini, pymunk)");
+        }
+        SweepGrid grid = Options.grid(spec, rates, iterations);
         ScenarioLoader loader = library.loader();
         List<Sweep.SceneFile> scenes = new ArrayList<>();
-        for (Path f : ScenarioFiles.expand(paths)) {
+        for (Path f : library.files(spec, paths)) {
             scenes.add(Sweep.read(loader, f));
         }
         List<SweepBackend> backends = new ArrayList<>();

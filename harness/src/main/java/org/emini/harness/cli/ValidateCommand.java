@@ -8,6 +8,8 @@ import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Parameters;
 
 /** {@code validate PATHS}: checks scene files against the schema and the reader's rules. */
@@ -17,13 +19,16 @@ final class ValidateCommand implements Callable<Integer> {
     @Mixin
     Library library;
 
+    @Spec
+    CommandSpec spec;
+
     @Parameters(paramLabel = "PATHS", arity = "0..*", description = "Scene files or folders (default: the library).")
     List<Path> paths;
 
     @Override
     public Integer call() {
         ScenarioLoader loader = library.loader();
-        List<Path> files = ScenarioFiles.expand(paths == null || paths.isEmpty() ? List.of(library.root()) : paths);
+        List<Path> files = library.files(spec, paths);
         int invalid = 0;
         for (Path file : files) {
             ScenarioLoader.Loaded loaded = loader.load(file);

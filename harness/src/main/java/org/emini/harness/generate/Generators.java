@@ -15,6 +15,15 @@ public final class Generators {
     private Generators() {
     }
 
+    /** How many bodies a generator makes, computed without making them (a long: rows² can pass 2³¹). */
+    public static long size(GeneratorSpec g) {
+        return switch (g.kind()) {
+            case pyramid -> (long) g.rows() * (g.rows() + 1L) / 2;
+            case grid -> (long) g.rows() * g.columns();
+            default -> g.count();
+        };
+    }
+
     /** The bodies of one generator, in order. */
     public static List<BodySpec> expand(GeneratorSpec g) {
         switch (g.kind()) {

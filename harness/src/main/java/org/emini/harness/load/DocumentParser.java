@@ -11,15 +11,19 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.yaml.snakeyaml.LoaderOptions;
-import org.yaml.snakeyaml.Yaml;
+import org.yaml.snakeyaml.composer.Composer;
 import org.yaml.snakeyaml.error.Mark;
 import org.yaml.snakeyaml.error.MarkedYAMLException;
+import org.yaml.snakeyaml.error.YAMLException;
 import org.yaml.snakeyaml.nodes.MappingNode;
 import org.yaml.snakeyaml.nodes.Node;
 import org.yaml.snakeyaml.nodes.NodeTuple;
 import org.yaml.snakeyaml.nodes.ScalarNode;
 import org.yaml.snakeyaml.nodes.SequenceNode;
 import org.yaml.snakeyaml.nodes.Tag;
+import org.yaml.snakeyaml.parser.ParserImpl;
+import org.yaml.snakeyaml.reader.StreamReader;
+import org.yaml.snakeyaml.resolver.Resolver;
 
 /**
  * Parses a YAML or JSON scenario into a JSON tree and a {@link SourceMap}.
@@ -43,6 +47,7 @@ public final class DocumentParser {
     private final String file;
     private final SourceMap sourceMap = new SourceMap();
     private final List<Problem> problems = new java.util.ArrayList<>();
+    private int nodes;
 
     private DocumentParser(String file) {
         this.file = file;
@@ -61,32 +66,55 @@ public final class DocumentParser {
     }
 
     private Parsed run(String text) {
+        Problem unprintable = SceneText.unprintable(file, text);
+        if (unprintable != null) {
+            problems.add(unprintable);
+            return new Parsed(null, sourceMap, problems);
+        }
         LoaderOptions options = new LoaderOptions();
         options.setAllowDuplicateKeys(false);
         options.setProcessComments(false);
+        options.setCodePointLimit(Limits.CODE_POINTS);
+        options.setMaxAliasesForCollections(Limits.COLLECTION_ALIASES);
+        // The guarded parser stops deeper documents first, with a mark; this is only a backstop.
+        options.setNestingDepthLimit(Limits.DEPTH + 10);
+        GuardedParser parser = new GuardedParser(new ParserImpl(new StreamReader(new StringReader(text)), options));
         Node node;
         try {
-            node = new Yaml(options).compose(new StringReader(text));
+            node = new Composer(parser, new Resolver(), options).getSingleNode();
         } catch (MarkedYAMLException e) {
             Mark mark = e.getProblemMark() != null ? e.getProblemMark() : e.getContextMark();
             String what = e.getProblem() != null ? e.getProblem() : e.getMessage();
             if (e.getContext() != null) {
                 what = e.getContext() + ": " + what;
             }
-            problems.add(new Problem(file, mark == null ? 0 : mark.getLine() + 1,
-                    mark == null ? 0 : mark.getColumn() + 1, "$", "cannot parse: " + what.trim()));
-            return new Parsed(null, sourceMap, problems);
+            return failed(mark != null ? mark : parser.lastMark(), "$", "cannot parse: " + what.trim());
+        } catch (GuardedParser.LimitException e) {
+            return failed(e.mark(), e.path(), e.getMessage());
+        } catch (YAMLException e) {
+            // SnakeYAML's own limits (aliases, nesting, size) carry no mark: the parser knows where it was.
+            return failed(parser.lastMark(), "$", "cannot parse: " + e.getMessage());
         } catch (RuntimeException e) {
-            problems.add(new Problem(file, 0, 0, "$", "cannot parse: " + e.getMessage()));
-            return new Parsed(null, sourceMap, problems);
+            return failed(parser.lastMark(), "$", "cannot parse: " + e);
         }
         if (node == null) {
             problems.add(new Problem(file, 1, 1, "$", "the file is empty"));
             return new Parsed(null, sourceMap, problems);
         }
         mark(JsonPath.ROOT, node);
-        JsonNode root = convert(node, JsonPath.ROOT);
+        JsonNode root;
+        try {
+            root = convert(node, JsonPath.ROOT);
+        } catch (GuardedParser.LimitException e) {
+            return failed(e.mark(), e.path(), e.getMessage());
+        }
         return new Parsed(problems.isEmpty() ? root : null, sourceMap, problems);
+    }
+
+    private Parsed failed(Mark mark, String path, String message) {
+        problems.add(new Problem(file, mark == null ? 0 : mark.getLine() + 1, mark == null ? 0 : mark.getColumn() + 1,
+                path, message));
+        return new Parsed(null, sourceMap, problems);
     }
 
     private void mark(JsonPath path, Node node) {
@@ -96,7 +124,16 @@ public final class DocumentParser {
         }
     }
 
+    // Aliases share nodes: a small file can stand for billions of values. Count them as expanded.
     private JsonNode convert(Node node, JsonPath path) {
+        if (path.elements().size() > Limits.DEPTH) {
+            throw new GuardedParser.LimitException("lists and maps nested more than " + Limits.DEPTH
+                    + " deep once aliases are expanded (an alias inside its own anchor?)", node.getStartMark(), path);
+        }
+        if (++nodes > Limits.NODES) {
+            throw new GuardedParser.LimitException("more than " + Limits.NODES
+                    + " values once aliases are expanded: the document is too large", node.getStartMark(), path);
+        }
         if (node instanceof MappingNode mapping) {
             ObjectNode out = NODES.objectNode();
             Set<String> seen = new HashSet<>();
@@ -133,30 +170,22 @@ public final class DocumentParser {
     private JsonNode scalar(ScalarNode node, JsonPath path) {
         Tag tag = node.getTag();
         String v = node.getValue();
-        try {
-            if (Tag.NULL.equals(tag)) {
-                return NODES.nullNode();
-            }
-            if (Tag.BOOL.equals(tag)) {
-                String s = v.toLowerCase(java.util.Locale.ROOT);
-                return NODES.booleanNode(s.equals("true") || s.equals("yes") || s.equals("on") || s.equals("y"));
-            }
-            if (Tag.INT.equals(tag)) {
-                return NODES.numberNode(new BigInteger(v.replace("_", "").replace("+", "")));
-            }
-            if (Tag.FLOAT.equals(tag)) {
-                String s = v.replace("_", "").toLowerCase(java.util.Locale.ROOT);
-                if (s.contains("inf") || s.contains("nan")) {
-                    problem(node, path, "not a finite number: " + v);
-                    return NODES.nullNode();
-                }
-                return NODES.numberNode(new BigDecimal(s));
-            }
-        } catch (NumberFormatException e) {
-            problem(node, path, "not a number the harness can read: " + v);
+        if (Tag.NULL.equals(tag)) {
             return NODES.nullNode();
         }
-        return NODES.textNode(v);
+        if (Tag.BOOL.equals(tag)) {
+            String s = v.toLowerCase(java.util.Locale.ROOT);
+            return NODES.booleanNode(s.equals("true") || s.equals("yes") || s.equals("on") || s.equals("y"));
+        }
+        Numbers.Read number = Tag.INT.equals(tag) ? Numbers.integer(v) : Tag.FLOAT.equals(tag) ? Numbers.decimal(v) : null;
+        if (number == null) {
+            return NODES.textNode(v);
+        }
+        if (number.problem() != null) {
+            problem(node, path, number.problem());
+            return NODES.nullNode();
+        }
+        return number.value() instanceof BigInteger i ? NODES.numberNode(i) : NODES.numberNode((BigDecimal) number.value());
     }
 
     private void problem(Node at, JsonPath path, String message) {

@@ -38,6 +38,8 @@ final class ScenarioReader {
     private final SourceMap sourceMap;
     private final List<Problem> problems = new ArrayList<>();
     private final Map<String, ShapeSpec> shapes = new LinkedHashMap<>();
+    /** Convex parts of each shape read so far (1 for a circle or polygon). */
+    private final Map<ShapeSpec, Long> convexParts = new java.util.IdentityHashMap<>();
 
     ScenarioReader(String file, SourceMap sourceMap) {
         this.file = file;
@@ -76,9 +78,17 @@ final class ScenarioReader {
         if (generators != null) {
             for (int i = 0; i < generators.size(); i++) {
                 GeneratorSpec g = generator(generators.get(i), r.key("generators").index(i));
-                if (g != null) {
-                    bodies.addAll(Generators.expand(g));
+                if (g == null) {
+                    continue;
                 }
+                // Counted before expanding, so that a generator of 10^10 bodies is refused, not attempted.
+                long made = Generators.size(g);
+                if (bodies.size() + made > Limits.BODIES) {
+                    problem(g.path(), "this generator makes " + made + " bodies; with the " + bodies.size()
+                            + " before it the scene would hold more than the " + Limits.BODIES + " a scene may have");
+                    break;
+                }
+                bodies.addAll(Generators.expand(g));
             }
         }
         Set<String> names = new HashSet<>();
@@ -129,8 +139,12 @@ final class ScenarioReader {
         if (!problems.isEmpty()) {
             return null;
         }
-        return new Scenario(name, file, description, category, world, shapes, bodies, actions, elements, run,
-                closedForm, oracle, known);
+        Scenario scenario = new Scenario(name, file, description, category, world, shapes, bodies, actions, elements,
+                run, closedForm, oracle, known);
+        for (Budget.Excess e : Budget.check(scenario)) {
+            problem(e.path(), e.message());
+        }
+        return problems.isEmpty() ? scenario : null;
     }
 
     private WorldSpec world(JsonNode w, JsonPath p) {
@@ -196,15 +210,26 @@ final class ScenarioReader {
             }
         }
         double defaultMass = 1;
+        long leaves = 1;
         if (kind == ShapeSpec.Kind.multiShape) {
             defaultMass = 0;
+            leaves = 0;
             for (ShapeSpec.Part part : parts) {
                 defaultMass += part.shape() == null ? 0 : part.shape().mass();
+                leaves += part.shape() == null ? 0 : convexParts.getOrDefault(part.shape(), 1L);
+            }
+            // Named multi-shapes nest by reference: ten levels of three parts are 59,049 parts.
+            if (leaves > Limits.SHAPE_PARTS) {
+                problem(p.key("parts"), "this multi-shape has " + leaves + " convex parts once its named parts are "
+                        + "placed, more than the " + Limits.SHAPE_PARTS + " a shape may have");
+                leaves = Limits.SHAPE_PARTS;
             }
         }
-        return new ShapeSpec(name, kind, num(s, "radius", 0), num(s, "width", 0), num(s, "height", 0),
+        ShapeSpec spec = new ShapeSpec(name, kind, num(s, "radius", 0), num(s, "width", 0), num(s, "height", 0),
                 s.has("sides") ? s.get("sides").asInt() : 0, vertices, parts, num(s, "mass", defaultMass),
                 num(s, "friction", 0.25), num(s, "elasticity", 0), p);
+        convexParts.put(spec, leaves);
+        return spec;
     }
 
     private BodyState state(JsonNode b, JsonPath p) {

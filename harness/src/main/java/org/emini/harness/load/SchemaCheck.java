@@ -63,9 +63,9 @@ public final class SchemaCheck {
         for (ValidationMessage m : messages) {
             JsonPath path = toPath(m.getInstanceLocation());
             if (isUnknownKey(m) && m.getProperty() != null) {
-                // When a branch of an if/then fails (a required key missing), its keys are reported as
-                // "unevaluated" too; the real complaint is the other one, so keep only that.
-                if ("unevaluatedProperties".equals(m.getType()) && failedValues.contains(path)) {
+                // When a branch of an if/then fails (a required key missing, a value out of its range), its
+                // keys are reported as "unevaluated" too; the real complaint is the other one, so keep only that.
+                if ("unevaluatedProperties".equals(m.getType()) && failedWithin(failedValues, path)) {
                     continue;
                 }
                 // The validator names the object; point at the key itself.
@@ -87,6 +87,17 @@ public final class SchemaCheck {
         problems.sort(Comparator.comparingInt(Problem::line).thenComparingInt(Problem::column)
                 .thenComparing(Problem::message));
         return problems;
+    }
+
+    /** Whether a value at or under the path failed its subschema. */
+    private static boolean failedWithin(Set<JsonPath> failed, JsonPath path) {
+        for (JsonPath f : failed) {
+            if (f.elements().size() >= path.elements().size()
+                    && f.elements().subList(0, path.elements().size()).equals(path.elements())) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static JsonPath toPath(JsonNodePath p) {

@@ -1,5 +1,7 @@
 package org.emini.harness.metrics;
 
+import java.util.ArrayList;
+import java.util.List;
 import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.load.JsonPath;
@@ -8,6 +10,19 @@ import org.emini.harness.scenario.MetricSpec;
 /** Creates the metric a scene requests; only requested metrics exist, so only they cost time. */
 public final class Metrics {
     private Metrics() {
+    }
+
+    /**
+     * The metrics a scene requests, in order.
+     *
+     * @throws UnsupportedElementException for a metric the engine cannot feed
+     */
+    public static List<Metric> create(List<MetricSpec> specs, BuiltWorld world) throws UnsupportedElementException {
+        List<Metric> metrics = new ArrayList<>();
+        for (MetricSpec m : specs) {
+            metrics.add(create(m, world));
+        }
+        return metrics;
     }
 
     /**

@@ -10,8 +10,10 @@ import org.emini.dynamics.World;
 import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.build.WorldBuilder;
+import org.emini.harness.build.WorldLimits;
 import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.closedform.ClosedForms;
+import org.emini.harness.load.Limits;
 import org.emini.harness.expect.Evaluator;
 import org.emini.harness.expect.Verdict;
 import org.emini.harness.metrics.Metric;
@@ -19,7 +21,6 @@ import org.emini.harness.metrics.Metrics;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.Channels;
 import org.emini.harness.scenario.ExpectationSpec;
-import org.emini.harness.scenario.MetricSpec;
 import org.emini.harness.scenario.RecordSpec;
 import org.emini.harness.scenario.Scenario;
 
@@ -39,19 +40,26 @@ public final class ScenarioRunner {
      * @param progress told how many ticks were just done (may be called often; cheap callbacks only)
      */
     public static SceneResult run(Scenario scenario, LongConsumer progress) {
+        return run(scenario, progress, Limits.SCENE_SECONDS);
+    }
+
+    /**
+     * Runs a scene with a time limit: a run still ticking after {@code maxSeconds} (wall clock, checked
+     * after every tick) stops with {@code ERROR}, as does one that runs out of memory, so that one
+     * scene cannot hang or take down a whole {@code run}.
+     */
+    public static SceneResult run(Scenario scenario, LongConsumer progress, double maxSeconds) {
         long ticks = scenario.ticks();
         long t0 = System.nanoTime();
         BuiltWorld built;
-        List<Metric> metrics = new ArrayList<>();
+        List<Metric> metrics;
         try {
             built = WorldBuilder.build(scenario);
-            for (MetricSpec m : scenario.run().record().metrics()) {
-                metrics.add(Metrics.create(m, built));
-            }
+            metrics = Metrics.create(scenario.run().record().metrics(), built);
         } catch (UnsupportedElementException e) {
             progress.accept(ticks);
             return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null);
-        } catch (RuntimeException e) {
+        } catch (RuntimeException | OutOfMemoryError e) {
             progress.accept(ticks);
             return errorOrKnown(scenario, "building the world: " + e, 0, 0);
         }
@@ -70,6 +78,20 @@ public final class ScenarioRunner {
             for (long k = 0; k < ticks; k++) {
                 schedule.beforeTick(k);
                 world.tick();
+                int far = WorldLimits.farBody(world);
+                if (far >= 0) {
+                    progress.accept(ticks - done);
+                    return errorOrKnown(scenario, "at tick " + world.getTickCount() + ": body '"
+                            + scenario.bodies().get(far).name() + "' " + WorldLimits.far(world.getBody(far))
+                            + "; the run stops here (scenarios/README.md, Limits)", millis(t1 - t0),
+                            millis(System.nanoTime() - t1));
+                }
+                if (System.nanoTime() - t1 > maxSeconds * 1e9) {
+                    progress.accept(ticks - done);
+                    return errorOrKnown(scenario, String.format(java.util.Locale.ROOT, "over the time limit of %.0f s at "
+                            + "tick %d of %d; the run stops here (--scene-timeout)", maxSeconds, k + 1, ticks),
+                            millis(t1 - t0), millis(System.nanoTime() - t1));
+                }
                 for (Metric m : metrics) {
                     m.afterTick();
                 }
@@ -81,7 +103,7 @@ public final class ScenarioRunner {
                     done += 64;
                 }
             }
-        } catch (RuntimeException e) {
+        } catch (RuntimeException | OutOfMemoryError e) {
             progress.accept(ticks - done);
             return errorOrKnown(scenario, "at tick " + world.getTickCount() + ": " + e, millis(t1 - t0),
                     millis(System.nanoTime() - t1));
@@ -140,7 +162,7 @@ public final class ScenarioRunner {
 
     /** Ticks between samples: the record interval rounded to whole ticks (at least one). */
     public static long samplingTicks(RecordSpec record, double timestep) {
-        return Double.isNaN(record.every()) ? 1 : Math.max(1, Math.round(record.every() / timestep));
+        return record.samplingTicks(timestep);
     }
 
     private static List<String> recordedBodies(Scenario scenario, BuiltWorld built) {

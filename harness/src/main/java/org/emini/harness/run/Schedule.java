@@ -12,12 +12,17 @@ import org.emini.harness.scenario.ActionSpec;
  * max(1, round(duration/h)) ticks from there (the engine clears forces after every tick). An emit action
  * is a burst: the emitter's {@code emit(count)}, on top of its rate.
  */
-final class Schedule {
+public final class Schedule {
     private final List<ActionSpec> actions;
     private final BuiltWorld built;
     private final double h;
 
-    Schedule(BuiltWorld built, List<ActionSpec> actions, double timestep) {
+    /**
+     * @param built the world the actions act on
+     * @param actions the scene's actions
+     * @param timestep seconds per tick
+     */
+    public Schedule(BuiltWorld built, List<ActionSpec> actions, double timestep) {
         this.built = built;
         this.actions = actions;
         this.h = timestep;
@@ -32,7 +37,7 @@ final class Schedule {
     }
 
     /** Applies what is due before tick {@code k} (0-based). */
-    void beforeTick(long k) {
+    public void beforeTick(long k) {
         for (ActionSpec a : actions) {
             long start = startTick(a.at(), h);
             boolean lasting = a.kind() == ActionSpec.Kind.force || a.kind() == ActionSpec.Kind.torque;

@@ -13,4 +13,9 @@ import java.util.List;
  */
 public record RecordSpec(double every, List<MetricSpec> metrics, String bodies, List<String> bodyNames,
                          boolean trace) {
+
+    /** Ticks between samples: the record interval rounded to whole ticks (at least one). */
+    public long samplingTicks(double timestep) {
+        return Double.isNaN(every) ? 1 : Math.max(1, Math.round(every / timestep));
+    }
 }

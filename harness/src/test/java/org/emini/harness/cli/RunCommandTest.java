@@ -87,8 +87,7 @@ class RunCommandTest {
 
     @Test
     void anOriginalWorldFileRunsAsAScene(@TempDir Path dir) throws Exception {
-        Path world = Repo.root().resolve("../shared/reference/worlds/test_basic.world").normalize();
-        org.junit.jupiter.api.Assumptions.assumeTrue(Files.isRegularFile(world), "reference worlds not found: " + world);
+        Path world = Repo.referenceWorlds().resolve("test_basic.world");
         Path scenes = Files.createDirectories(dir.resolve("worlds"));
         Files.copy(world, scenes.resolve("test_basic.world"));
         // A cut file: the loader names the byte where the reader ran out.

@@ -3,7 +3,6 @@ package org.emini.harness.convert;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -33,10 +32,9 @@ import org.junit.jupiter.api.io.TempDir;
 class ConvertTest {
     private static final ScenarioLoader LOADER = new ScenarioLoader(SchemaCheck.fromFile(Repo.schema()), Repo.scenarios());
 
-    /** The original's real files, beside the repository as in CI; the test skips without them. */
+    /** The original's real files, beside the repository as in CI (Repo.referenceWorlds). */
     private static List<Path> worlds() throws Exception {
-        Path dir = Repo.root().resolve("../shared/reference/worlds").normalize();
-        assumeTrue(Files.isDirectory(dir), "reference worlds not found at " + dir + "; skipping");
+        Path dir = Repo.referenceWorlds();
         try (Stream<Path> s = Files.list(dir)) {
             return s.sorted().toList();
         }

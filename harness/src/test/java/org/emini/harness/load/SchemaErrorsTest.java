@@ -12,9 +12,7 @@ import org.junit.jupiter.api.Test;
 class SchemaErrorsTest {
 
     private static Problem only(ScenarioLoader.Loaded loaded) {
-        assertFalse(loaded.ok(), "the scene should be invalid");
-        assertEquals(1, loaded.problems().size(), loaded.problems().toString());
-        return loaded.problems().get(0);
+        return Scenes.onlyProblem(loaded);
     }
 
     @Test

@@ -12,6 +12,8 @@ import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Landscape;
 import org.emini.dynamics.World;
+import org.emini.harness.build.CollisionBits;
+import org.emini.harness.build.UnsupportedElementException;
 import org.emini.event.Event;
 import org.emini.particle.ParticleEmitter;
 
@@ -93,6 +95,7 @@ public final class RecipeBuilder {
 
     private static Map<String, Constraint> constraints(Recipe r, World world, Map<Integer, Body> byId) {
         Map<String, Constraint> made = new LinkedHashMap<>();
+        List<Body[]> apart = new ArrayList<>();
         for (int i = 0; i < r.joints.size(); i++) {
             JointRecipe j = r.joints.get(i);
             Body a = need(byId, j.a);
@@ -100,7 +103,7 @@ public final class RecipeBuilder {
             Joint joint = j.atPoint ? Joint.atWorldPoint(a, b, j.x, j.y, j.fixed)
                     : new Joint(a, b, j.ax, j.ay, j.bx, j.by, j.fixed);
             if (!j.collide) {
-                joint.setCollisionLayer(31 - i % 32);
+                apart.add(new Body[] {a, b});
             }
             world.addConstraint(joint);
             made.put("joint:" + j.id, joint);
@@ -118,10 +121,17 @@ public final class RecipeBuilder {
                 spring.setDamping(s.damping);
             }
             if (!s.collide) {
-                spring.setCollisionLayer(i % 32);
+                apart.add(new Body[] {a, b});
             }
             world.addConstraint(spring);
             made.put("spring:" + s.id, spring);
+        }
+        // As a scene's builder does: bits the bodies' own layers leave free, never one reused by unrelated pairs.
+        try {
+            CollisionBits.applyTo(byId.values(), apart);
+        } catch (UnsupportedElementException e) {
+            throw new IllegalStateException("the recipe's non-colliding joints and springs need more collision layer bits"
+                + " than are free: " + e.getMessage(), e);
         }
         float dt = world.getTimestep();
         for (MotorRecipe m : r.motors) {

@@ -5,7 +5,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.emini.harness.build.ShapeFactory;
-import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.load.JsonPath;
 import org.emini.harness.scenario.ShapeSpec;
 import org.emini.shape.Circle;
@@ -43,11 +42,7 @@ final class ShapeBuilder {
             shape.setFriction(r.friction);
             shape.setElasticity(r.elasticity);
         } else {
-            try {
-                shape = factory.shape(spec(r));
-            } catch (UnsupportedElementException e) {
-                throw new IllegalStateException(e.getMessage(), e);
-            }
+            shape = factory.shape(spec(r));
         }
         if (r.centred && shape instanceof Polygon p) {
             shape = p.centred();

@@ -17,9 +17,9 @@ import picocli.CommandLine.Option;
 /**
  * {@code worlds}: the world fuzzer. Generates seeded random worlds from every engine feature, checks
  * the invariants after every tick and the metamorphic relations, shrinks each violation and writes it
- * out. Registrable on its own ({@code harness fuzz-worlds} today) or under a {@code fuzz} parent.
+ * out. The {@code worlds} subcommand of {@code harness fuzz}.
  */
-@Command(name = "worlds", aliases = "fuzz-worlds", mixinStandardHelpOptions = true,
+@Command(name = "worlds", mixinStandardHelpOptions = true,
         description = {"Fuzzes the engine with seeded random worlds: invariants every tick, metamorphic relations,",
             "violations shrunk and written as scene files or world descriptions (harness/README.md, World fuzzer).",
             "Exit status 1 when a world violated something (or a replayed finding still does)."})

@@ -79,7 +79,7 @@ class InvariantChecksTest {
             }
         })).of(ViolationKind.EXCEPTION);
         assertEquals(5, v.tick());
-        assertTrue(v.message().startsWith("java.lang.IndexOutOfBoundsException: planted at dynamics.World.solve"), v.message());
+        assertTrue(v.message().startsWith("java.lang.IndexOutOfBoundsException: planted at dynamics.Solver.solve"), v.message());
     }
 
     @Test

@@ -42,6 +42,6 @@ class ShrinkerTest {
         Path yaml = dir.resolve(json.getFileName().toString().replace(".json", ".yaml"));
         assertTrue(Files.readString(yaml).contains("maxEnergyRise"));
         // The drop keeps its energy: the replay finds nothing, and says so with exit status 0.
-        assertEquals(0, org.emini.harness.cli.Main.execute("fuzz-worlds", "--replay", json.toString()));
+        assertEquals(0, org.emini.harness.cli.Main.execute("fuzz", "worlds", "--replay", json.toString()));
     }
 }
