@@ -52,6 +52,9 @@ public final class Body {
     int slot = -1;
     boolean proxyDirty;
     int solverIndex;
+    // Bodies this one never collides with (World.disableCollision): a joint's "collide connected" off.
+    Body[] noCollide;
+    int noCollideCount;
     Contact contactList;
     int contactCount;
     // Simulated in the current tick: dynamic and inside the simulation area.
@@ -771,6 +774,38 @@ public final class Body {
      */
     public void setUserData(Object userData) {
         this.userData = userData;
+    }
+
+    /** Whether a pair exclusion keeps this body from colliding with the other. */
+    boolean excludes(Body other) {
+        for (int i = 0; i < noCollideCount; i++) {
+            if (noCollide[i] == other) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    void exclude(Body other) {
+        if (excludes(other)) {
+            return;
+        }
+        if (noCollide == null) {
+            noCollide = new Body[2];
+        } else if (noCollideCount == noCollide.length) {
+            noCollide = java.util.Arrays.copyOf(noCollide, 2 * noCollideCount);
+        }
+        noCollide[noCollideCount++] = other;
+    }
+
+    void include(Body other) {
+        for (int i = 0; i < noCollideCount; i++) {
+            if (noCollide[i] == other) {
+                noCollide[i] = noCollide[--noCollideCount];
+                noCollide[noCollideCount] = null;
+                return;
+            }
+        }
     }
 
     @Override

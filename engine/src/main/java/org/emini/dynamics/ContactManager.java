@@ -60,7 +60,8 @@ final class ContactManager implements PairCallback, QueryCallback {
     static boolean shouldCollide(Body a, Body b) {
         return (a.isDynamic() || b.isDynamic())
             && a.isInteracting() && b.isInteracting()
-            && (a.getCollisionLayers() & b.getCollisionLayers()) == 0;
+            && (a.getCollisionLayers() & b.getCollisionLayers()) == 0
+            && (a.noCollideCount == 0 || !a.excludes(b));
     }
 
     static int partCount(Shape s) {

@@ -552,6 +552,59 @@ public final class World {
         }
     }
 
+    /**
+     * Keeps two bodies from colliding with each other, whatever their layers (Box2D's
+     * "collide connected" off for a joint: the bodies a joint holds together often overlap). Unlike a
+     * shared collision layer bit, it affects no other pair. Takes effect at the next tick.
+     *
+     * @param a a body
+     * @param b another body
+     */
+    public void disableCollision(Body a, Body b) {
+        Check.notNull("World.disableCollision", "a", a);
+        Check.notNull("World.disableCollision", "b", b);
+        if (a == b) {
+            throw new IllegalArgumentException("World.disableCollision: a and b are the same body, " + a);
+        }
+        a.exclude(b);
+        b.exclude(a);
+        collisionFilterChanged(a, b);
+    }
+
+    /**
+     * Lets two bodies collide again after {@link #disableCollision}.
+     *
+     * @param a a body
+     * @param b another body
+     */
+    public void enableCollision(Body a, Body b) {
+        Check.notNull("World.enableCollision", "a", a);
+        Check.notNull("World.enableCollision", "b", b);
+        a.include(b);
+        b.include(a);
+        collisionFilterChanged(a, b);
+    }
+
+    /**
+     * Whether {@link #disableCollision} keeps two bodies apart.
+     *
+     * @param a a body
+     * @param b another body
+     * @return true when their collision is disabled
+     */
+    public boolean isCollisionDisabled(Body a, Body b) {
+        return a != null && b != null && a.excludes(b);
+    }
+
+    private void collisionFilterChanged(Body a, Body b) {
+        if (a.world == this) {
+            bodyFilterChanged(a);
+        }
+        if (b.world == this) {
+            bodyFilterChanged(b);
+        }
+    }
+
     // ---------------------------------------------------------------------------------------------
     // Constraints
 

@@ -10,7 +10,7 @@ import org.emini.harness.scenario.Section;
 
 /**
  * Builders of the constraint sections: joints, springs and motors, through the engine's public API.
- * Which joined bodies may not collide is {@link CollisionBits}'s work, done before these run.
+ * Which joined bodies may not collide is {@link ConnectedPairs}'s work, done before these run.
  */
 final class ConstraintBuilders {
     private ConstraintBuilders() {

@@ -44,7 +44,7 @@ public final class WorldBuilder {
             world.addBody(body);
             built.add(spec.name(), body);
         }
-        CollisionBits.apply(built);
+        ConnectedPairs.apply(built);
         for (Map.Entry<String, ElementBuilder> e : builders.entrySet()) {
             Section section = scenario.elements().get(e.getKey());
             if (section != null) {

@@ -12,8 +12,7 @@ import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Landscape;
 import org.emini.dynamics.World;
-import org.emini.harness.build.CollisionBits;
-import org.emini.harness.build.UnsupportedElementException;
+import org.emini.harness.build.ConnectedPairs;
 import org.emini.event.Event;
 import org.emini.particle.ParticleEmitter;
 
@@ -126,13 +125,8 @@ public final class RecipeBuilder {
             world.addConstraint(spring);
             made.put("spring:" + s.id, spring);
         }
-        // As a scene's builder does: bits the bodies' own layers leave free, never one reused by unrelated pairs.
-        try {
-            CollisionBits.applyTo(byId.values(), apart);
-        } catch (UnsupportedElementException e) {
-            throw new IllegalStateException("the recipe's non-colliding joints and springs need more collision layer bits"
-                + " than are free: " + e.getMessage(), e);
-        }
+        // As a scene's builder does.
+        ConnectedPairs.applyTo(world, apart);
         float dt = world.getTimestep();
         for (MotorRecipe m : r.motors) {
             Body body = need(byId, m.body);

@@ -1,7 +1,6 @@
 package org.emini.harness.build;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -14,11 +13,11 @@ import org.emini.harness.run.Status;
 import org.junit.jupiter.api.Test;
 
 /**
- * Joints with {@code collide: false} keep their two bodies apart without stopping any other pair
- * colliding (issue 14: bits were 31 − (i mod 32), so joint 32 shared joint 0's bit and the scene's own
- * layers, and unrelated bodies fell through each other).
+ * Joints with {@code collide: false} keep exactly their two bodies apart, through the engine's pair
+ * switch, without stopping any other pair colliding (issue 14: bits were 31 − (i mod 32), so joint 32
+ * shared joint 0's bit and the scene's own layers, and unrelated bodies fell through each other).
  */
-class JointCollisionBitsTest {
+class ConnectedPairsTest {
 
     /**
      * 33 boxes, each jointed to a non-interacting handle (which needs no bit at all), box 32 dropped on
@@ -48,25 +47,23 @@ class JointCollisionBitsTest {
     }
 
     @Test
-    void jointBitsAvoidTheScenesOwnLayers() throws Exception {
+    void theScenesOwnLayersAreLeftAsTheyAre() throws Exception {
         BuiltWorld w = WorldBuilder.build(Scenes.valid("layers.yaml",
                 "shapes: {b: {type: circle, radius: 5}}",
                 "bodies:",
                 "  - {name: p, shape: b, position: [0, 0], layers: [31]}",
-                "  - {name: q, shape: b, position: [100, 0], layers: [31]}",
                 "  - {name: a, shape: b, position: [200, 0]}",
                 "  - {name: c, shape: b, position: [210, 0]}",
                 "joints: [{bodyA: a, bodyB: c, at: [205, 0]}]",
                 "run: {duration: 1}"));
-        int a = w.body("a").getCollisionLayers();
-        assertEquals(a, w.body("c").getCollisionLayers());
-        assertTrue(a != 0, "the jointed pair shares a bit");
-        assertEquals(0, a & w.body("p").getCollisionLayers(), "and it is not the scene's layer 31");
+        assertEquals(0, w.body("a").getCollisionLayers());
+        assertEquals(1 << 31, w.body("p").getCollisionLayers());
+        assertTrue(w.world().isCollisionDisabled(w.body("a"), w.body("c")));
     }
 
-    /** A chain's links share no bit unless both of them are kept apart from every member of it. */
+    /** Only the jointed pairs of a chain are kept apart; links two apart, and collide: true joints, still collide. */
     @Test
-    void onlyPairsThatMayNotCollideShareABit() throws Exception {
+    void onlyTheJointedPairsAreKeptApart() throws Exception {
         BuiltWorld w = WorldBuilder.build(Scenes.valid("chain.yaml",
                 "shapes: {b: {type: circle, radius: 5}}",
                 "bodies:",
@@ -74,34 +71,27 @@ class JointCollisionBitsTest {
                 "  - {name: l1, shape: b, position: [10, 0]}",
                 "  - {name: l2, shape: b, position: [20, 0]}",
                 "  - {name: l3, shape: b, position: [30, 0]}",
-                "  - {name: s, shape: b, position: [90, 0], static: true}",
-                "  - {name: t, shape: b, position: [99, 0], static: true}",
                 "joints:",
                 "  - {bodyA: l0, bodyB: l1, at: [5, 0]}",
                 "  - {bodyA: l1, bodyB: l2, at: [15, 0]}",
                 "  - {bodyA: l2, bodyB: l3, at: [25, 0]}",
-                "  - {bodyA: s, bodyB: t, at: [95, 0]}",
                 "  - {bodyA: l0, bodyB: l2, at: [10, 0], collide: true}",
                 "run: {duration: 1}"));
-        List<String> names = List.of("l0", "l1", "l2", "l3", "s", "t");
+        List<String> names = List.of("l0", "l1", "l2", "l3");
         List<String> apart = List.of("l0-l1", "l1-l2", "l2-l3");
         for (int i = 0; i < names.size(); i++) {
             for (int j = i + 1; j < names.size(); j++) {
                 Body a = w.body(names.get(i));
                 Body b = w.body(names.get(j));
-                boolean shared = (a.getCollisionLayers() & b.getCollisionLayers()) != 0;
-                boolean mayCollide = a.isDynamic() || b.isDynamic();
-                if (mayCollide) {
-                    assertEquals(apart.contains(names.get(i) + "-" + names.get(j)), shared, names.get(i) + "-" + names.get(j));
-                }
+                String pair = names.get(i) + "-" + names.get(j);
+                assertEquals(apart.contains(pair), w.world().isCollisionDisabled(a, b), pair);
             }
         }
-        assertEquals(0, w.body("s").getCollisionLayers(), "two static bodies need no bit");
     }
 
-    /** 33 pendulums need 33 bits; the engine has 32: the scene is unsupported, naming joint 32. */
+    /** 33 pendulums, each bob kept from its pivot: no limit of 32 any more. */
     @Test
-    void moreNonCollidingPairsThanBitsIsUnsupportedAtTheFirstJointWithout() {
+    void aScenesNonCollidingPairsAreNotLimitedToTheLayerBits() throws Exception {
         List<String> lines = new ArrayList<>(List.of("shapes: {b: {type: circle, radius: 5}}", "bodies:"));
         List<String> joints = new ArrayList<>(List.of("joints:"));
         for (int i = 0; i <= 32; i++) {
@@ -111,11 +101,8 @@ class JointCollisionBitsTest {
         }
         lines.addAll(joints);
         lines.add("run: {duration: 1}");
-        var scene = Scenes.valid("pendulums.yaml", lines.toArray(new String[0]));
-        UnsupportedElementException e = assertThrows(UnsupportedElementException.class, () -> WorldBuilder.build(scene));
-        assertTrue(e.getMessage().contains("$.joints[32]"), e.getMessage());
-        SceneResult r = ScenarioRunner.run(scene, n -> { });
-        assertEquals(Status.UNSUPPORTED, r.status());
-        assertTrue(r.message().contains("collide: false"), r.message());
+        BuiltWorld w = WorldBuilder.build(Scenes.valid("pendulums.yaml", lines.toArray(new String[0])));
+        assertTrue(w.world().isCollisionDisabled(w.body("pivot32"), w.body("bob32")));
+        assertEquals(0, w.body("bob32").getCollisionLayers());
     }
 }
