@@ -191,16 +191,7 @@ public final class EverythingScene implements PhysicsEventListener {
      * @return the hash
      */
     public long hash() {
-        long h = 1125899906842597L;
-        for (int i = 0; i < world.getBodyCount(); i++) {
-            Body b = world.getBody(i);
-            h = mix(h, b.getX());
-            h = mix(h, b.getY());
-            h = mix(h, b.getAngle());
-            h = mix(h, b.getVelocityX());
-            h = mix(h, b.getVelocityY());
-            h = mix(h, b.getAngularVelocity());
-        }
+        long h = bodyHash(world);
         for (int i = 0; i < world.getConstraintCount(); i++) {
             h = mix(h, world.getConstraint(i).getForce());
         }
@@ -211,6 +202,26 @@ public final class EverythingScene implements PhysicsEventListener {
         }
         h = 31 * h + eventCount;
         return 31 * h + eventHash;
+    }
+
+    /**
+     * A hash of every body's pose and velocity, in world order.
+     *
+     * @param world the world
+     * @return the hash
+     */
+    public static long bodyHash(World world) {
+        long h = 1125899906842597L;
+        for (int i = 0; i < world.getBodyCount(); i++) {
+            Body b = world.getBody(i);
+            h = mix(h, b.getX());
+            h = mix(h, b.getY());
+            h = mix(h, b.getAngle());
+            h = mix(h, b.getVelocityX());
+            h = mix(h, b.getVelocityY());
+            h = mix(h, b.getAngularVelocity());
+        }
+        return h;
     }
 
     private static long mix(long h, float value) {

@@ -57,16 +57,7 @@ class PinnedHashTest {
             used += world.getLastIterationCount();
         }
         assertTrue(used < 0.8f * TICKS * world.getConstraintIterations(), "iterations used " + used);
-        long h = 1125899906842597L;
-        for (int i = 0; i < world.getBodyCount(); i++) {
-            Body b = world.getBody(i);
-            h = 31 * h + Float.floatToIntBits(b.getX());
-            h = 31 * h + Float.floatToIntBits(b.getY());
-            h = 31 * h + Float.floatToIntBits(b.getAngle());
-            h = 31 * h + Float.floatToIntBits(b.getVelocityX());
-            h = 31 * h + Float.floatToIntBits(b.getVelocityY());
-            h = 31 * h + Float.floatToIntBits(b.getAngularVelocity());
-        }
+        long h = EverythingScene.bodyHash(world);
         long hash = 31 * h + used;
         assertEquals(PINNED_DYNAMIC, hash, () -> String.format("new hash 0x%016XL", hash));
     }

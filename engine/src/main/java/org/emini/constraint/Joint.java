@@ -36,6 +36,9 @@ public final class Joint extends TwoBodyConstraint {
     private float warmX;
     private float warmY;
     private float warmAngle;
+    // The last linearBias result.
+    private float biasX;
+    private float biasY;
     private float tickX;
     private float tickY;
     private float tickAngle;
@@ -171,9 +174,7 @@ public final class Joint extends TwoBodyConstraint {
         if (axialMass != 0f) {
             float bias = 0f;
             if (useBias) {
-                float maxTurn = radius > 0f ? step.getJointPushMaxVelocity() / radius : Float.POSITIVE_INFINITY;
-                bias = biasRate * angleError(step);
-                bias = bias < -maxTurn ? -maxTurn : (bias > maxTurn ? maxTurn : bias);
+                bias = angularBias(step, biasRate);
             }
             float cdot = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
             float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accAngle;
@@ -188,17 +189,9 @@ public final class Joint extends TwoBodyConstraint {
         float cx = relativeVelocityX(step);
         float cy = relativeVelocityY(step);
         if (useBias) {
-            float bx = biasRate * sepX;
-            float by = biasRate * sepY;
-            float max = step.getJointPushMaxVelocity();
-            float b2 = bx * bx + by * by;
-            if (b2 > max * max) {
-                float scale = max / EMath.sqrt(b2);
-                bx *= scale;
-                by *= scale;
-            }
-            cx += bx;
-            cy += by;
+            linearBias(step, biasRate);
+            cx += biasX;
+            cy += biasY;
         }
         // K = J M⁻¹ Jᵀ for the point constraint.
         float m = mA + mB;
@@ -256,20 +249,10 @@ public final class Joint extends TwoBodyConstraint {
         float cy = relativeVelocityY(step);
         float cw = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
         if (useBias) {
-            float bx = biasRate * sepX;
-            float by = biasRate * sepY;
-            float max = step.getJointPushMaxVelocity();
-            float b2 = bx * bx + by * by;
-            if (b2 > max * max) {
-                float scale = max / EMath.sqrt(b2);
-                bx *= scale;
-                by *= scale;
-            }
-            float maxTurn = radius > 0f ? max / radius : Float.POSITIVE_INFINITY;
-            float bw = biasRate * angleError(step);
-            cx += bx;
-            cy += by;
-            cw += bw < -maxTurn ? -maxTurn : (bw > maxTurn ? maxTurn : bw);
+            linearBias(step, biasRate);
+            cx += biasX;
+            cy += biasY;
+            cw += angularBias(step, biasRate);
         }
         float inv = massScale / det;
         float px = -inv * (c11 * cx + c12 * cy + c13 * cw) - impulseScale * accX;
@@ -295,6 +278,28 @@ public final class Joint extends TwoBodyConstraint {
         float dy = Math.abs(k12 * jx + k22 * jy + k23 * jw);
         float dw = Math.abs(k13 * jx + k23 * jy + k33 * jw) * radius;
         return Math.max(dx, Math.max(dy, dw));
+    }
+
+    /** The point's position correction, bias rate times error, capped at the joint push speed: into biasX, biasY. */
+    private void linearBias(SolverStep step, float biasRate) {
+        float bx = biasRate * sepX;
+        float by = biasRate * sepY;
+        float max = step.getJointPushMaxVelocity();
+        float b2 = bx * bx + by * by;
+        if (b2 > max * max) {
+            float scale = max / EMath.sqrt(b2);
+            bx *= scale;
+            by *= scale;
+        }
+        biasX = bx;
+        biasY = by;
+    }
+
+    /** The angle's correction (rad/s), capped so that the bodies' rims move at most the joint push speed. */
+    private float angularBias(SolverStep step, float biasRate) {
+        float maxTurn = radius > 0f ? step.getJointPushMaxVelocity() / radius : Float.POSITIVE_INFINITY;
+        float bias = biasRate * angleError(step);
+        return bias < -maxTurn ? -maxTurn : (bias > maxTurn ? maxTurn : bias);
     }
 
     /** The angle error now: the tick's start error turned by the bodies' relative rotation since. */
