@@ -68,23 +68,10 @@ final class Extremes {
     private static void shrink(ShapeRecipe s) {
         for (int i = 0; i < 8; i++) {
             scale(s, 0.5f);
-            if (!builds(s)) {
+            if (!ShapeBuilder.accepted(s)) {
                 scale(s, 2f);
                 return;
             }
-        }
-    }
-
-    private static boolean builds(ShapeRecipe s) {
-        try {
-            if (s.offCentreCircle()) {
-                new org.emini.shape.Circle(s.radius, s.centerX, s.centerY);
-            } else {
-                new org.emini.harness.build.ShapeFactory().shape(ShapeBuilder.spec(s));
-            }
-            return true;
-        } catch (IllegalArgumentException e) {
-            return false;
         }
     }
 

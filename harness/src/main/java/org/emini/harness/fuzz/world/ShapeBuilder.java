@@ -52,6 +52,20 @@ final class ShapeBuilder {
         return shape;
     }
 
+    /** Whether the engine accepts the shape (a generated polygon may be narrower than Shape.MIN_SIZE). */
+    static boolean accepted(ShapeRecipe s) {
+        try {
+            if (s.offCentreCircle()) {
+                new Circle(s.radius, s.centerX, s.centerY);
+            } else {
+                new ShapeFactory().shape(spec(s));
+            }
+            return true;
+        } catch (IllegalArgumentException e) {
+            return false;
+        }
+    }
+
     /** The scene's form of a shape (what a scene file with these values reads into). */
     static ShapeSpec spec(ShapeRecipe r) {
         List<double[]> vertices = null;
