@@ -624,10 +624,11 @@ public final class Body {
      * @param py the point's y (px)
      */
     public void applyForceAt(float fx, float fy, float px, float py) {
-        applyForce(fx, fy);
         Check.finite("Body.applyForceAt", "px", px);
         Check.finite("Body.applyForceAt", "py", py);
-        torque += (px - x) * fy - (py - y) * fx;
+        float moment = finiteMoment("Body.applyForceAt", px, py, fx, fy);
+        applyForce(fx, fy);
+        torque += moment;
         if (world != null) {
             world.bodyForcesChanged(this);
         }
@@ -679,6 +680,10 @@ public final class Body {
         Check.finite("Body.applyImpulse", "jy", jy);
         if (dynamic) {
             float im = shape.getInverseMass();
+            if (!EMath.isFinite(vx + im * jx) || !EMath.isFinite(vy + im * jy)) {
+                throw new IllegalArgumentException("Body.applyImpulse: the velocity it gives, (" + (vx + im * jx) + ", "
+                    + (vy + im * jy) + ") px/s, overflows a float");
+            }
             vx += im * jx;
             vy += im * jy;
             if (world != null) {
@@ -698,9 +703,13 @@ public final class Body {
     public void applyImpulseAt(float jx, float jy, float px, float py) {
         Check.finite("Body.applyImpulseAt", "px", px);
         Check.finite("Body.applyImpulseAt", "py", py);
+        float dw = dynamic && rotatable ? shape.getInverseInertia() * finiteMoment("Body.applyImpulseAt", px, py, jx, jy) : 0f;
+        if (!EMath.isFinite(w + dw)) {
+            throw new IllegalArgumentException("Body.applyImpulseAt: the angular velocity it gives, " + w + " + " + dw
+                + " rad/s, overflows a float");
+        }
         applyImpulse(jx, jy);
         if (dynamic && rotatable) {
-            float dw = shape.getInverseInertia() * ((px - x) * jy - (py - y) * jx);
             w += dw;
             if (world != null) {
                 world.bodyImpulseApplied(this, 0f, 0f, dw);
@@ -774,6 +783,16 @@ public final class Body {
      */
     public void setUserData(Object userData) {
         this.userData = userData;
+    }
+
+    /** (p − position) × (fx, fy), refused when it overflows a float (finite inputs, an infinite moment). */
+    private float finiteMoment(String where, float px, float py, float fx, float fy) {
+        float moment = (px - x) * fy - (py - y) * fx;
+        if (!EMath.isFinite(moment)) {
+            throw new IllegalArgumentException(where + ": the moment about the body, (p - position) x (" + fx + ", " + fy
+                + ") at (" + px + ", " + py + "), overflows a float");
+        }
+        return moment;
     }
 
     /** Whether a pair exclusion keeps this body from colliding with the other. */

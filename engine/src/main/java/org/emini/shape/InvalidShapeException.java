@@ -20,6 +20,8 @@ public final class InvalidShapeException extends IllegalArgumentException {
         DEGENERATE,
         /** Narrower than {@link Shape#MIN_SIZE} somewhere: too small to collide reliably. */
         TOO_SMALL,
+        /** Reaches farther than {@link Shape#MAX_EXTENT} from its origin: its boxes would overflow. */
+        TOO_LARGE,
         /** The outline turns both ways: it has a recess. */
         NOT_CONVEX,
         /** The outline crosses or doubles back on itself (for example a pentagram). */

@@ -39,6 +39,12 @@ public abstract class Shape {
     public static final float DEFAULT_ELASTICITY = 0f;
     /** The smallest width a shape may have anywhere (px): five times the default linear slop. */
     public static final float MIN_SIZE = 0.25f;
+    /**
+     * The farthest a shape may reach from its local origin (px): 10⁷, the largest coordinate at which
+     * float still resolves a pixel to about one part in a thousand, the range the particles and the
+     * harness accept too. Beyond it boxes, grids and sweeps overflow.
+     */
+    public static final float MAX_EXTENT = 1e7f;
 
     private final float area;
     private final float centroidX;
@@ -59,6 +65,11 @@ public abstract class Shape {
         centroidY = geometry.centroidY;
         unitInertia = geometry.unitInertia;
         boundingRadius = geometry.boundingRadius;
+        if (!(boundingRadius <= MAX_EXTENT)) {
+            throw new InvalidShapeException(InvalidShapeException.Rule.TOO_LARGE, -1, getClass().getSimpleName()
+                    + ": rule TOO_LARGE: it reaches " + boundingRadius + " px from its origin, beyond Shape.MAX_EXTENT ("
+                    + MAX_EXTENT + " px)");
+        }
         applyMass(geometry.mass);
     }
 

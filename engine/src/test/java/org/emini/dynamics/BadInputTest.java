@@ -28,6 +28,14 @@ class BadInputTest {
         refused("Body.applyTorque", () -> b.applyTorque(Float.NaN));
         refused("Body.addCollisionLayer", () -> b.addCollisionLayer(32));
         refused("shape", () -> new Body(0f, 0f, null, true));
+        // Finite inputs whose results overflow a float (found by the setter fuzzer): refused, nothing applied.
+        refused("Body.applyImpulseAt: the moment", () -> b.applyImpulseAt(-3.4028235E38f, -1e30f, -1e30f, -1e30f));
+        refused("Body.applyForceAt: the moment", () -> b.applyForceAt(3e38f, 3e38f, -3e38f, 3e38f));
+        assertTrue(b.getAngularVelocity() == 0f && b.getVelocityX() == 0f, "nothing was applied");
+        b.setVelocity(3e38f, 0f);
+        refused("Body.applyImpulse: the velocity", () -> b.applyImpulse(3e38f, 0f));
+        refused("rule TOO_LARGE", () -> Shape.createCircle(3.4028235E38f));
+        refused("rule TOO_LARGE", () -> Shape.createRectangle(3e7f, 3e7f));
     }
 
     @Test
