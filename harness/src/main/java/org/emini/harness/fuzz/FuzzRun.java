@@ -32,6 +32,9 @@ final class FuzzRun {
     record Finding(long index, Verdict verdict, Path file) {
     }
 
+    /** Inputs between progress lines on stderr (a long run says it is alive). */
+    private static final int PROGRESS = 10_000;
+
     private FuzzRun() {
     }
 
@@ -52,6 +55,10 @@ final class FuzzRun {
                 long index = o.from + k;
                 byte[] input = o.replay != null ? Files.readAllBytes(o.replay.get((int) k)) : target.input(o.seed, index);
                 Verdict v = sandbox.run(input);
+                if ((k + 1) % PROGRESS == 0) {
+                    System.err.printf(Locale.ROOT, "fuzz %s: %d of %d inputs, %d failing%n", target.name(), k + 1, n,
+                            findings.size());
+                }
                 counts.merge(v.outcome(), 1L, Long::sum);
                 atTick += v.outcome() == Outcome.CLEAN && v.stage().startsWith("tick") ? 1 : 0;
                 if (v.outcome().failure()) {

@@ -193,15 +193,14 @@ class SizeLimitsTest {
     }
 
     /**
-     * A fuzz finding: gravity 1e30 sent 20,000 bodies to 1e26 px in one tick, where they share float
-     * coordinates and the broadphase paired them all (a hang). The run now stops at the first tick a
-     * body leaves ±1e7 px, with an error naming it.
+     * A fuzz finding: gravity -1e30 (now out of the schema's bounds; a velocity of 1e30 still does it)
+     * sent 20,000 bodies to 1e26 px in one tick, where they share float coordinates and the broadphase
+     * pairs them all. The run now stops at the first tick a body leaves ±1e7 px, with an error naming it.
      */
     @Test
     void theRunStopsWhenABodyLeavesTheCoordinatesAFloatResolves() {
-        SceneResult r = ScenarioRunner.run(Scenes.valid("g.yaml",
-                "world: {gravity: [0, 1.0e30]}",
-                "bodies: [{name: ball, shape: {type: circle, radius: 1}}]",
+        SceneResult r = ScenarioRunner.run(Scenes.valid("v.yaml",
+                "bodies: [{name: ball, shape: {type: circle, radius: 1}, velocity: [0, 1.0e30]}]",
                 "run: {duration: 1}"), n -> { });
         assertEquals(Status.ERROR, r.status());
         assertTrue(r.message().startsWith("at tick 1: body 'ball' is at (0.0, "), r.message());
@@ -216,5 +215,22 @@ class SizeLimitsTest {
                 "run: {duration: 1}"), n -> { }, 1e-9);
         assertEquals(Status.ERROR, r.status());
         assertTrue(r.message().startsWith("over the time limit of 0 s at tick 1 of 20"), r.message());
+    }
+
+    /**
+     * A fuzz finding: gravity [2147483648, 200] on 5,000 rain bodies stretched every broadphase box over
+     * the whole container in the first tick, and pairing them never ended. Gravity and the tick have bounds.
+     */
+    @Test
+    void gravityAndTheTickHaveBounds() {
+        Problem g = only(Scenes.load("g.yaml", "world: {gravity: [2147483648, 200]}", "run: {duration: 1}"));
+        assertEquals("$.world.gravity[0]", g.path());
+        assertEquals(1, g.line());
+        Problem a = only(Scenes.load("a.yaml", "actions: [{at: 0, type: gravity, gravity: [0, -1.0e6]}]",
+                "run: {duration: 1}"));
+        assertEquals("$.actions[0].gravity[1]", a.path());
+        assertEquals("$.world.timestep", only(Scenes.load("h.yaml", "world: {timestep: 2}", "run: {duration: 10}")).path());
+        assertEquals("$.world.ticksPerSecond",
+                only(Scenes.load("t.yaml", "world: {ticksPerSecond: 0.5}", "run: {duration: 10}")).path());
     }
 }
