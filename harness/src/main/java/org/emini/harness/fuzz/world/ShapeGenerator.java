@@ -1,6 +1,5 @@
 package org.emini.harness.fuzz.world;
 
-import org.emini.shape.InvalidShapeException;
 
 /**
  * Random shapes of every kind: circles (some off-centre), rectangles, regular polygons, convex
@@ -24,20 +23,15 @@ final class ShapeGenerator {
 
     /** A shape of any kind with extent in [min, max], mass in [0.25, 8] (sometimes 20× heavier). */
     ShapeRecipe any(double min, double max, double elasticity) {
-        ShapeRecipe s;
-        int tries = 0;
-        do {
-            s = switch (rand.between(0, 4)) {
-                case 0 -> circle(min, max, true);
-                case 1 -> rectangle(min, max);
-                case 2 -> regularPolygon(min, max);
-                case 3 -> polygon(min, max, true);
-                default -> multi(min, max);
-            };
-            material(s, elasticity);
-            // A thin random polygon may be narrower than the engine accepts: draw again.
-        } while (!ShapeBuilder.accepted(s) && ++tries < 20);
+        ShapeRecipe s = switch (rand.between(0, 4)) {
+            case 0 -> circle(min, max, true);
+            case 1 -> rectangle(min, max);
+            case 2 -> regularPolygon(min, max);
+            case 3 -> polygon(min, max, true);
+            default -> multi(min, max);
+        };
         s.id = nextId++;
+        material(s, elasticity);
         return s;
     }
 
@@ -161,13 +155,6 @@ final class ShapeGenerator {
     }
 
     private static boolean valid(ShapeRecipe s) {
-        Recipe probe = new Recipe();
-        probe.shapes.add(s);
-        try {
-            new ShapeBuilder(probe).shape(s.id);
-            return true;
-        } catch (InvalidShapeException e) {
-            return false;
-        }
+        return ShapeBuilder.accepted(s);
     }
 }
