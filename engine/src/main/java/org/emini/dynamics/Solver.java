@@ -122,6 +122,12 @@ final class Solver {
         contacts.storeImpulses();
         for (int c = 0; c < cn; c++) {
             cs[c].finish(step);
+            if (!(Math.abs(cs[c].getForce()) <= Float.MAX_VALUE)) {
+                solving = false;
+                throw new IllegalStateException("World.tick: constraint " + c + " (" + cs[c] + ") exerted a force of "
+                    + cs[c].getForce() + " in tick " + tick + ", beyond the range of finite numbers; check the forces,"
+                    + " velocities, gravity and timestep of its bodies");
+            }
         }
         lastSubstep = h;
         lastIterationCount = used;

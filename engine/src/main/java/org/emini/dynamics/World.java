@@ -5,6 +5,7 @@ import org.emini.collision.QueryCallback;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
 import org.emini.internal.Check;
+import org.emini.math.EMath;
 import org.emini.particle.ParticleEmitter;
 import org.emini.particle.ParticleSystem;
 
@@ -90,13 +91,21 @@ public final class World {
         return timestep;
     }
 
+    /** The shortest timestep (s): a million ticks a second; shorter ones make rates (1/h) overflow. */
+    public static final float MIN_TIMESTEP = 1e-6f;
+
     /**
      * Sets the length of one tick.
      *
-     * @param seconds the timestep (s), &gt; 0
+     * @param seconds the timestep (s), finite and at least {@link #MIN_TIMESTEP}
      */
     public void setTimestep(float seconds) {
-        timestep = Check.positive("World.setTimestep", "seconds", seconds);
+        Check.positive("World.setTimestep", "seconds", seconds);
+        if (seconds < MIN_TIMESTEP) {
+            throw new IllegalArgumentException("World.setTimestep: seconds must be >= " + MIN_TIMESTEP + " (World.MIN_TIMESTEP),"
+                + " was " + seconds);
+        }
+        timestep = seconds;
     }
 
     /**
@@ -1052,7 +1061,14 @@ public final class World {
             Body b = simulated[i];
             b.proxyDirty = false;
             b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-            boolean moved = broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], b.vx * dt, b.vy * dt);
+            float dx = b.vx * dt;
+            float dy = b.vy * dt;
+            if (!EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])) {
+                throw new IllegalStateException("World.tick: Body#" + b.getId() + " left the range of finite numbers in tick "
+                    + tickCount + " (position (" + b.x + ", " + b.y + "), velocity (" + b.vx + ", " + b.vy + ") px/s over a "
+                    + dt + " s timestep); check the forces, velocities, gravity and timestep applied to it");
+            }
+            boolean moved = broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], dx, dy);
             contacts.findLandscapeContacts(b, moved, broadPhase);
         }
     }

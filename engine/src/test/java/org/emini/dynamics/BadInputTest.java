@@ -56,6 +56,7 @@ class BadInputTest {
         refused("World.setGravity: gx", () -> world.setGravity(Float.NaN, 0f));
         refused("World.setTimestep", () -> world.setTimestep(0f));
         refused("World.setTimestep", () -> world.setTimestep(Float.NaN));
+        refused("World.setTimestep: seconds must be >= 1.0E-6", () -> world.setTimestep(Float.MIN_VALUE));
         refused("World.setConstraintIterations", () -> world.setConstraintIterations(0));
         refused("World.setDampingLateral", () -> world.setDampingLateral(2f));
         refused("SolverSettings.setContactHertz", () -> world.getSolverSettings().setContactHertz(Float.NaN));
