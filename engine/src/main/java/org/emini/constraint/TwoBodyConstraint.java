@@ -4,6 +4,7 @@ import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.SolverStep;
 import org.emini.internal.Check;
+import org.emini.shape.Shape;
 
 /**
  * What joints and springs share: two bodies, an anchor on each in the body's own frame (it may lie
@@ -64,10 +65,20 @@ public abstract class TwoBodyConstraint implements Constraint {
         }
         bodyA = a;
         bodyB = b;
-        localAX = Check.finite(where, "anchor a x", ax);
-        localAY = Check.finite(where, "anchor a y", ay);
-        localBX = Check.finite(where, "anchor b x", bx);
-        localBY = Check.finite(where, "anchor b y", by);
+        localAX = anchor(where, "anchor a x", ax);
+        localAY = anchor(where, "anchor a y", ay);
+        localBX = anchor(where, "anchor b x", bx);
+        localBY = anchor(where, "anchor b y", by);
+    }
+
+    /** A local anchor coordinate: finite and within Shape.MAX_EXTENT of its body, where lever arms stay in range. */
+    private static float anchor(String where, String what, float value) {
+        Check.finite(where, what, value);
+        if (Math.abs(value) > Shape.MAX_EXTENT) {
+            throw new IllegalArgumentException(where + ": " + what + " is " + value + " px from its body, beyond"
+                + " Shape.MAX_EXTENT (" + Shape.MAX_EXTENT + " px)");
+        }
+        return value;
     }
 
     /** Reads the bodies' solver state at the start of a tick; false when both bodies are fixed. */

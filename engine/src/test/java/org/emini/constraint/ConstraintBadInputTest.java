@@ -92,4 +92,17 @@ class ConstraintBadInputTest {
         assertEquals(0, world.getConstraintCount());
         world.tick();
     }
+
+    /** Found by the scenario fuzzer: a joint at (0, −1e30) gave NaN forces in its first tick. */
+    @org.junit.jupiter.api.Test
+    void anchorsFartherThanTheLargestShapeAreRefused() {
+        org.emini.dynamics.World world = new org.emini.dynamics.World();
+        org.emini.dynamics.Body a = new org.emini.dynamics.Body(0f, 0f, org.emini.shape.Shape.createCircle(2f), false);
+        org.emini.dynamics.Body b = new org.emini.dynamics.Body(0f, 20f, org.emini.shape.Shape.createCircle(2f), true);
+        world.addBody(a);
+        world.addBody(b);
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+            () -> Joint.atWorldPoint(a, b, 0f, -1e30f, false));
+        org.junit.jupiter.api.Assertions.assertTrue(e.getMessage().contains("beyond Shape.MAX_EXTENT"), e.getMessage());
+    }
 }
