@@ -58,16 +58,17 @@ class InvariantChecksTest {
         assertEquals(java.util.List.of(), WorldCheck.run(drop()).violations());
     }
 
+    /** The engine now stops the tick itself on a non-finite constraint force, with its documented error. */
     @Test
     void aNonFiniteConstraintForceIsCaught() {
-        Violation v = run(drop(), ViolationKind.NON_FINITE, w -> w.world().addConstraint(new Planted(w.world(), 0) {
+        Violation v = run(drop(), ViolationKind.EXCEPTION, w -> w.world().addConstraint(new Planted(w.world(), 0) {
             @Override
             public float getForce() {
                 return Float.NaN;
             }
-        })).of(ViolationKind.NON_FINITE);
+        })).of(ViolationKind.EXCEPTION);
         assertNotNull(v);
-        assertTrue(v.message().contains("force NaN"), v.message());
+        assertTrue(v.message().contains("exerted a force of NaN"), v.message());
     }
 
     @Test
