@@ -1024,9 +1024,7 @@ public final class World {
         Body bad = solver.solve(this, area.bodies, area.count, contacts.active, contacts.activeCount, constraints,
             constraintCount, broadPhase);
         if (bad != null) {
-            throw new IllegalStateException("World.tick: Body#" + bad.getId() + " left the range of finite numbers in tick "
-                + tickCount + " (" + solver.bodies.describe(bad) + "); check the forces, velocities, gravity and timestep"
-                + " applied to it");
+            throw leftFiniteRange(bad, solver.bodies.describe(bad));
         }
         if (particles.getEmitterCount() > 0) {
             particles.step(this, dt);
@@ -1037,6 +1035,12 @@ public final class World {
                 events[i].check(this, eventListener);
             }
         }
+    }
+
+    /** The tick's one error for a body whose state no float holds, with that state described. */
+    private IllegalStateException leftFiniteRange(Body b, String state) {
+        return new IllegalStateException("World.tick: Body#" + b.getId() + " left the range of finite numbers in tick "
+            + tickCount + " (" + state + "); check the forces, velocities, gravity and timestep applied to it");
     }
 
     /** Moves the proxies of the simulated bodies and of the bodies the application moved. */
@@ -1064,9 +1068,8 @@ public final class World {
             float dx = b.vx * dt;
             float dy = b.vy * dt;
             if (!EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])) {
-                throw new IllegalStateException("World.tick: Body#" + b.getId() + " left the range of finite numbers in tick "
-                    + tickCount + " (position (" + b.x + ", " + b.y + "), velocity (" + b.vx + ", " + b.vy + ") px/s over a "
-                    + dt + " s timestep); check the forces, velocities, gravity and timestep applied to it");
+                throw leftFiniteRange(b, "position (" + b.x + ", " + b.y + "), velocity (" + b.vx + ", " + b.vy
+                    + ") px/s over a " + dt + " s timestep");
             }
             boolean moved = broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], dx, dy);
             contacts.findLandscapeContacts(b, moved, broadPhase);
