@@ -6,7 +6,7 @@ import org.emini.constraint.Motor;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
 import org.emini.particle.ParticleEmitter;

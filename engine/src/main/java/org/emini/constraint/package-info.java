@@ -6,6 +6,6 @@
  * {@link org.emini.dynamics.Constraint}): rigid constraints correct their position error with the
  * world's joint softness ({@link org.emini.dynamics.SolverSettings#getJointHertz()}) measured from
  * the bodies' motion since the tick began, so they do not drift; springs are soft constraints, stable
- * at any stiffness. Add them to the world with {@link org.emini.dynamics.World#addConstraint}.
+ * at any stiffness. Add them to the world with {@link org.emini.world.World#addConstraint}.
  */
 package org.emini.constraint;

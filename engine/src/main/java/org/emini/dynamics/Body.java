@@ -45,7 +45,7 @@ public final class Body {
     long forceTick;
 
     // Bookkeeping owned by the world.
-    World world;
+    Simulation world;
     int id = -1;
     int worldIndex = -1;
     int proxyId = -1;
@@ -112,11 +112,11 @@ public final class Body {
     }
 
     /**
-     * The world this body belongs to.
+     * The world this body belongs to (an {@code org.emini.world.World}, seen as the physics it runs).
      *
      * @return the world, or null when the body has not been added to one
      */
-    public World getWorld() {
+    public Simulation getWorld() {
         return world;
     }
 

@@ -5,7 +5,7 @@ import org.emini.collision.QueryCallback;
 import org.emini.internal.HeapSort;
 
 /**
- * {@link World#queryBodies}: the bodies whose current box overlaps a rectangle, in world order.
+ * {@link Simulation#queryBodies}: the bodies whose current box overlaps a rectangle, in world order.
  *
  * <p>The last tick's simulated bodies are tested one by one (the solver moved them after their
  * broadphase boxes were last fitted), the bodies the application moved since are tested from the
@@ -16,14 +16,14 @@ final class BodyQuery implements QueryCallback {
     private final float[] box = new float[4];
     private long[] found = new long[16];
     private int count;
-    private World world;
+    private Simulation world;
     private BroadPhase broadPhase;
     private float minX;
     private float minY;
     private float maxX;
     private float maxY;
 
-    void run(World w, BroadPhase bp, SimulationArea area, Body[] dirty, int dirtyCount, float minX, float minY,
+    void run(Simulation w, BroadPhase bp, SimulationArea area, Body[] dirty, int dirtyCount, float minX, float minY,
             float maxX, float maxY, QueryCallback out) {
         this.minX = minX;
         this.minY = minY;

@@ -1,7 +1,7 @@
 package org.emini.dynamics;
 
 /**
- * The world's bodies three ways: in insertion order (the index of {@link World#getBody}, which events
+ * The world's bodies three ways: in insertion order (the index of {@link Simulation#getBody}, which events
  * and the original's ids use), by slot (the broadphase's user data; slots are reused after removal),
  * and by id (ids grow with insertion and removal keeps the order, so a binary search finds them).
  *

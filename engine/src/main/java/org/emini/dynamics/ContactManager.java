@@ -26,7 +26,7 @@ import org.emini.shape.Shape;
  * collected.
  */
 final class ContactManager implements PairCallback, QueryCallback {
-    private final World world;
+    private final Simulation world;
     private final Collider collider = new Collider();
     private final Manifold manifold = new Manifold();
     private final Segment segment = new Segment();
@@ -53,7 +53,7 @@ final class ContactManager implements PairCallback, QueryCallback {
     private int landscapeEpoch;
     private Body queryBody;
 
-    ContactManager(World world) {
+    ContactManager(Simulation world) {
         this.world = world;
     }
 

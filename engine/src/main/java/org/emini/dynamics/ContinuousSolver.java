@@ -28,7 +28,7 @@ import org.emini.shape.Shape;
  * rest, notably fast-spinning bodies with long arms.
  */
 final class ContinuousSolver implements QueryCallback {
-    private final World world;
+    private final Simulation world;
     private final TimeOfImpact toi = new TimeOfImpact();
     private final float[] box = new float[4];
     private final float[] box2 = new float[4];
@@ -51,7 +51,7 @@ final class ContinuousSolver implements QueryCallback {
 
     private final LandscapeSweep segments = new LandscapeSweep();
 
-    ContinuousSolver(World world) {
+    ContinuousSolver(Simulation world) {
         this.world = world;
     }
 

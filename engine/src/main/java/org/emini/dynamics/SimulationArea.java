@@ -29,7 +29,7 @@ final class SimulationArea implements QueryCallback {
     private long[] keys = new long[16];
     private int keyCount;
 
-    private World world;
+    private Simulation world;
     private BroadPhase broadPhase;
     private final float[] box = new float[4];
 
@@ -69,7 +69,7 @@ final class SimulationArea implements QueryCallback {
      * Finds this tick's simulated bodies. Bodies that were simulated last tick lose their solver
      * index and their awake mark first, so a body that left the area counts as static.
      */
-    void collect(World w, BroadPhase bp, Body[] all, int allCount) {
+    void collect(Simulation w, BroadPhase bp, Body[] all, int allCount) {
         Body[] t = previous;
         previous = bodies;
         bodies = t;

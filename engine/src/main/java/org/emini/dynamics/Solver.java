@@ -27,7 +27,7 @@ final class Solver {
     private float lastSubstep;
     private int lastIterationCount;
 
-    Solver(World world) {
+    Solver(Simulation world) {
         step = new SolverStep(bodies, world);
         continuous = new ContinuousSolver(world);
     }
@@ -51,7 +51,7 @@ final class Solver {
      * @return null, or the first body whose state left the range of finite numbers (when the
      *     continuous pass found it, nothing was written back)
      */
-    Body solve(World world, Body[] simulated, int simulatedCount, Contact[] active, int activeCount,
+    Body solve(Simulation world, Body[] simulated, int simulatedCount, Contact[] active, int activeCount,
             Constraint[] constraints, int constraintCount, BroadPhase broadPhase) {
         float dt = world.getTimestep();
         int n = world.getConstraintIterations();

@@ -10,14 +10,14 @@ package org.emini.dynamics;
  */
 public final class SolverStep {
     private final SolverBodies bodies;
-    private final World world;
+    private final Simulation world;
     private float dt;
     private float h;
     private float invH;
     private final Softness jointSoftness = new Softness();
     private float jointPushMax;
 
-    SolverStep(SolverBodies bodies, World world) {
+    SolverStep(SolverBodies bodies, Simulation world) {
         this.bodies = bodies;
         this.world = world;
     }

@@ -5,7 +5,7 @@ import org.emini.collision.Manifold;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Contact;
-import org.emini.dynamics.World;
+import org.emini.dynamics.Simulation;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
@@ -339,7 +339,7 @@ public final class Event {
      * @param world the world
      * @param listener the listener to tell
      */
-    public void check(World world, PhysicsEventListener listener) {
+    public void check(Simulation world, PhysicsEventListener listener) {
         if (listener == null) {
             throw new IllegalArgumentException("Event.check: listener must not be null");
         }
@@ -372,7 +372,7 @@ public final class Event {
         }
     }
 
-    private void checkConstraints(World world, PhysicsEventListener listener) {
+    private void checkConstraints(Simulation world, PhysicsEventListener listener) {
         for (int i = 0, n = world.getConstraintCount(); i < n; i++) {
             Constraint c = world.getConstraint(i);
             if (constraint != null && c != constraint) {
@@ -385,7 +385,7 @@ public final class Event {
         }
     }
 
-    private void checkContactsOf(Body b, World world, PhysicsEventListener listener) {
+    private void checkContactsOf(Body b, Simulation world, PhysicsEventListener listener) {
         if (b.getWorld() != world || !wanted(b)) {
             return;
         }
@@ -401,7 +401,7 @@ public final class Event {
         }
     }
 
-    private void checkAllContacts(World world, PhysicsEventListener listener) {
+    private void checkAllContacts(Simulation world, PhysicsEventListener listener) {
         for (int i = 0, n = world.getContactCount(); i < n; i++) {
             Contact c = world.getContact(i);
             Body a = c.getBodyA();

@@ -2,7 +2,7 @@ package org.emini.event;
 
 /**
  * Receives the events of a world (the original engine's callback). Called from
- * {@link org.emini.dynamics.World#tick()} after the bodies have moved; the listener must not add or
+ * {@link org.emini.world.World#tick()} after the bodies have moved; the listener must not add or
  * remove bodies, constraints or events during the call: note what to do and do it after the tick.
  */
 public interface PhysicsEventListener {

@@ -8,7 +8,7 @@ import java.util.Map;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.emini.particle.ParticleEmitter;
 import org.emini.shape.Shape;

@@ -7,7 +7,7 @@ import java.util.List;
 /**
  * The document model of an original world file (<code>.phy</code>, <code>.world</code>): every
  * record with its raw stored values, in file order. {@link PhyReader} fills it, {@link PhyWriter}
- * stores it, {@link WorldBuilder} turns it into a {@link org.emini.dynamics.World}.
+ * stores it, {@link WorldBuilder} turns it into a {@link org.emini.world.World}.
  *
  * <p>Records name each other by their index in these lists: bodies name shapes (the shape list
  * holds standard shapes and multishapes in file order), constraints and script rows name bodies,

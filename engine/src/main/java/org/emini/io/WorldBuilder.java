@@ -7,7 +7,7 @@ import java.util.List;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.emini.math.EMath;
 import org.emini.particle.ParticleEmitter;

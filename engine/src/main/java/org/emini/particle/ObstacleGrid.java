@@ -4,7 +4,7 @@ import java.util.Arrays;
 import org.emini.collision.QueryCallback;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.dynamics.Simulation;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
@@ -18,7 +18,7 @@ import org.emini.shape.Shape;
  * the end of the tick (the solver's result) and its pose at the start, extrapolated back with its
  * final velocities, so a particle's motion can be tested relative to a moving body; a body the
  * tick did not simulate (static, or frozen outside the simulation area) stands still. The bodies
- * come from {@link World#queryBodies} (exact current boxes: the simulated bodies one by one, the
+ * come from {@link Simulation#queryBodies} (exact current boxes: the simulated bodies one by one, the
  * others through the broadphase), so the cost follows the simulated bodies and those near the
  * particles, never the frozen ones elsewhere; particles then query the grid, which measured 2 to 20
  * times faster here than querying the broadphase per particle. The per-tick counting sort costs
@@ -103,11 +103,11 @@ final class ObstacleGrid implements QueryCallback {
      * out of the region by up to half the body's narrower side; the region is grown by the largest
      * such distance among the bodies it touches, so that the bodies where it may land are known too.
      *
-     * <p>Bodies are found with {@link World#queryBodies}, the region grown by the farthest a
+     * <p>Bodies are found with {@link Simulation#queryBodies}, the region grown by the farthest a
      * simulated body moved this tick, so the cost follows the simulated bodies and the bodies near
      * the particles: bodies frozen or static elsewhere cost nothing.
      */
-    void build(World world, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
+    void build(Simulation world, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
         count = 0;
         largeCount = 0;
         float maxReach = 0f;
@@ -235,7 +235,7 @@ final class ObstacleGrid implements QueryCallback {
     }
 
     /** Collects in {@link #candidates} the bodies whose box overlaps the rectangle, in world order. */
-    private void query(World world, float minX, float minY, float maxX, float maxY) {
+    private void query(Simulation world, float minX, float minY, float maxX, float maxY) {
         candidates.count = 0;
         world.queryBodies(minX, minY, maxX, maxY, candidates);
         visited += candidates.count;

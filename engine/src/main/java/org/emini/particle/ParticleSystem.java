@@ -1,13 +1,13 @@
 package org.emini.particle;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.dynamics.Simulation;
 import org.emini.math.EMath;
 
 /**
  * A set of particle emitters and their stepping against a world's bodies and landscape.
  *
- * <p>Every {@link World} owns one (its {@code addParticleEmitter} and related calls land here)
+ * <p>Every {@code World} owns one (its {@code addParticleEmitter} and related calls land here)
  * and steps it at the end of each tick, after the solver, so particles see the bodies where the
  * tick left them. An application may also own one and step it on its own schedule.
  *
@@ -158,7 +158,7 @@ public final class ParticleSystem {
      * @param world the world whose gravity and bodies the particles feel
      * @param dt the timestep (s), &gt; 0
      */
-    public void step(World world, float dt) {
+    public void step(Simulation world, float dt) {
         if (world == null) {
             throw new IllegalArgumentException("ParticleSystem.step: world must not be null");
         }

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Shape;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.function.Executable;
@@ -96,7 +96,7 @@ class ConstraintBadInputTest {
     /** Found by the scenario fuzzer: a joint at (0, −1e30) gave NaN forces in its first tick. */
     @org.junit.jupiter.api.Test
     void anchorsFartherThanTheLargestShapeAreRefused() {
-        org.emini.dynamics.World world = new org.emini.dynamics.World();
+        org.emini.world.World world = new org.emini.world.World();
         org.emini.dynamics.Body a = new org.emini.dynamics.Body(0f, 0f, org.emini.shape.Shape.createCircle(2f), false);
         org.emini.dynamics.Body b = new org.emini.dynamics.Body(0f, 20f, org.emini.shape.Shape.createCircle(2f), true);
         world.addBody(a);

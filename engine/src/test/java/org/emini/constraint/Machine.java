@@ -3,7 +3,7 @@ package org.emini.constraint;
 import java.util.Random;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
 import org.emini.shape.Shape;

@@ -1,7 +1,7 @@
 package org.emini.constraint;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Shape;
 
 /** Scene builders and measures shared by the constraint tests. */

@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.ExternalForce;
-import org.emini.dynamics.World;
+import org.emini.world.ExternalForce;
+import org.emini.world.World;
 import org.emini.shape.Shape;
 import org.junit.jupiter.api.Test;
 

@@ -3,7 +3,7 @@ package org.emini.constraint;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Shape;
 import org.junit.jupiter.api.Test;
 

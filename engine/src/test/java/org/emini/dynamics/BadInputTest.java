@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.shape.Shape;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.function.Executable;
 

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.emini.shape.Shape;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /** The world's body list against a plain list: order kept, ids found, through random adds, removals and ticks. */

@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.function.Consumer;
 import org.emini.event.Event;
 import org.emini.shape.Shape;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -3,6 +3,7 @@ package org.emini.dynamics;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.shape.Shape;
+import org.emini.world.World;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 

@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.shape.Shape;
+import org.emini.world.ExternalForce;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /** External forces act every tick before the solve: buoyancy floats a box at the closed-form depth. */

@@ -3,6 +3,7 @@ package org.emini.dynamics;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /**

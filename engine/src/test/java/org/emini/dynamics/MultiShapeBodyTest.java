@@ -7,6 +7,7 @@ import org.emini.shape.Circle;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
+import org.emini.world.World;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.emini.shape.Shape;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,6 +1,7 @@
 package org.emini.dynamics;
 
 import org.emini.shape.Shape;
+import org.emini.world.World;
 
 /** Small scene builders shared by the physics tests. */
 final class Scenes {

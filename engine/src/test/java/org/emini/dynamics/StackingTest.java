@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 import org.emini.collision.Collider;
 import org.emini.collision.Manifold;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /**

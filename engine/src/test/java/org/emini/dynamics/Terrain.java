@@ -3,6 +3,7 @@ package org.emini.dynamics;
 import java.util.Random;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
+import org.emini.world.World;
 
 /** A large hilly landscape with a rain of mixed bodies, for the scale, allocation and determinism tests. */
 final class Terrain {

@@ -15,7 +15,7 @@ import org.emini.constraint.Motor;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Contact;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Shape;
 import org.junit.jupiter.api.Test;
 

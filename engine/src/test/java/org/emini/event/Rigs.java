@@ -1,6 +1,6 @@
 package org.emini.event;
 
-import org.emini.dynamics.World;
+import org.emini.world.World;
 
 /** Helpers for the event tests. */
 final class Rigs {

@@ -13,7 +13,7 @@ import org.emini.constraint.Joint;
 import org.emini.constraint.Motor;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.junit.jupiter.api.Test;
 

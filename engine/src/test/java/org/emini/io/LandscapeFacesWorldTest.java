@@ -6,7 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.junit.jupiter.api.Test;
 

@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Polygon;
 import org.junit.jupiter.api.Test;

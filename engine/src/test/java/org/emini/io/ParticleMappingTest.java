@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.particle.ParticleEmitter;
 import org.junit.jupiter.api.Test;
 

@@ -13,7 +13,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Circle;
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;

@@ -3,7 +3,7 @@ package org.emini.particle;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.Arrays;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.math.EMath;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;

@@ -1,7 +1,7 @@
 package org.emini.particle;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 

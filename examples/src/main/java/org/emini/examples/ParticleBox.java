@@ -3,7 +3,7 @@ package org.emini.examples;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.math.EMath;
 import org.emini.particle.ParticleEmitter;
 import org.emini.shape.Shape;

@@ -17,7 +17,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Circle;
 import org.emini.shape.Polygon;
 import org.emini.shape.Shape;

@@ -3,7 +3,7 @@ package org.emini.examples;
 import org.emini.constraint.Joint;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Shape;
 
 /**

@@ -5,7 +5,7 @@ import org.emini.collision.Collider;
 import org.emini.collision.Manifold;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Contact;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.Shape;
 
 /**

@@ -3,7 +3,7 @@ package org.emini.examples;
 import java.util.Random;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
 

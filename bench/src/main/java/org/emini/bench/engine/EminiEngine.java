@@ -1,7 +1,7 @@
 package org.emini.bench.engine;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.build.WorldBuilder;

@@ -12,7 +12,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 import org.emini.bench.scene.BenchScenes;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.build.UnsupportedElementException;

@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.emini.bench.scene.BenchScenes;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.build.WorldBuilder;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.load.SchemaCheck;

@@ -3,7 +3,7 @@ package org.emini.harness.build;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.List;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.scenario.Section;
 
 /**

@@ -4,7 +4,7 @@ import java.util.List;
 import java.util.Map;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.SolverSettings;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.load.JsonPath;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.BodyState;

@@ -3,7 +3,7 @@ package org.emini.harness.build;
 import java.util.Arrays;
 import java.util.Comparator;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.load.Limits;
 
 /**

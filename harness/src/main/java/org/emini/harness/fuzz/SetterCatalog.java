@@ -15,7 +15,7 @@ import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
 import org.emini.dynamics.SolverSettings;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.particle.ParticleEmitter;
 import org.emini.shape.Circle;
 import org.emini.shape.MultiShape;

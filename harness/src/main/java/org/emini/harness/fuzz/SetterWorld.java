@@ -7,7 +7,7 @@ import org.emini.constraint.Motor;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.particle.ParticleEmitter;
 import org.emini.shape.Shape;
 

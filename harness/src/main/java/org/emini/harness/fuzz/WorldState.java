@@ -2,7 +2,7 @@ package org.emini.harness.fuzz;
 
 import java.util.function.LongConsumer;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.build.WorldLimits;
 import org.emini.particle.ParticleEmitter;
 

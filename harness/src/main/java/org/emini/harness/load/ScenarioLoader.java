@@ -10,7 +10,7 @@ import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.build.WorldBuilder;
 import org.emini.harness.build.WorldLimits;
 import org.emini.harness.convert.WorldToScenario;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.io.PhyFormatException;

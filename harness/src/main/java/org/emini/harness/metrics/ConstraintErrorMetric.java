@@ -5,7 +5,7 @@ import java.util.List;
 import org.emini.constraint.Joint;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Constraint;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 
 /**
  * constraintError.max and .mean: the distance between the two world anchors of each pin joint and

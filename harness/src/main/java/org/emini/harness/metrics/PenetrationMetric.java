@@ -7,7 +7,7 @@ import org.emini.collision.Segment;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Contact;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
 

@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.function.LongConsumer;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.build.WorldBuilder;

@@ -2,7 +2,7 @@ package org.emini.harness.run;
 
 import java.util.List;
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.scenario.ActionSpec;
 

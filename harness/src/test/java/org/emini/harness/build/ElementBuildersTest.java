@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.Scenes;
 import org.emini.shape.Circle;
 import org.emini.shape.MultiShape;

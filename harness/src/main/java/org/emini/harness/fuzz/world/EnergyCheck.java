@@ -1,7 +1,7 @@
 package org.emini.harness.fuzz.world;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 
 /**
  * No energy is created in a world without energy sources (no motors, external forces, springs,

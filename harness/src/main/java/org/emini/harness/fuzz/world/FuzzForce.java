@@ -1,8 +1,8 @@
 package org.emini.harness.fuzz.world;
 
 import org.emini.dynamics.Body;
-import org.emini.dynamics.ExternalForce;
-import org.emini.dynamics.World;
+import org.emini.world.ExternalForce;
+import org.emini.world.World;
 
 /** An external force of a recipe; allocation-free, as an ExternalForce must be. */
 final class FuzzForce implements ExternalForce {

@@ -2,7 +2,7 @@ package org.emini.harness.fuzz.world;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Contact;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
 

@@ -4,7 +4,7 @@ import java.util.List;
 import java.util.Map;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.particle.ParticleEmitter;
 
 /**

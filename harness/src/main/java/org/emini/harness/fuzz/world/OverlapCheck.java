@@ -4,7 +4,7 @@ import java.util.HashMap;
 import java.util.Map;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Contact;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 
 /**
  * Touching bodies do not stay overlapped beyond a bound: a contact (two bodies, or a body and a

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 
 /**
  * No dynamic body passes into or through a static body it collides with, or through a landscape

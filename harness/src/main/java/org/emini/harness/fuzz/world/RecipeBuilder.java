@@ -11,7 +11,7 @@ import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.harness.build.ConnectedPairs;
 import org.emini.event.Event;
 import org.emini.particle.ParticleEmitter;

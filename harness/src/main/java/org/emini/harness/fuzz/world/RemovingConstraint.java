@@ -2,7 +2,7 @@ package org.emini.harness.fuzz.world;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.SolverStep;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 
 /** An application constraint that removes a body from the world in its {@code prepare} of one tick. */
 final class RemovingConstraint extends IdleConstraint {

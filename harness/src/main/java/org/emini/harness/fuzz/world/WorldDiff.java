@@ -7,7 +7,7 @@ import org.emini.constraint.TwoBodyConstraint;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Landscape;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.emini.particle.ParticleEmitter;
 
 /**

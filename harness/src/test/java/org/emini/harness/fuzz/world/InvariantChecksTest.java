@@ -9,7 +9,7 @@ import java.util.Set;
 import java.util.function.Consumer;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.SolverStep;
-import org.emini.dynamics.World;
+import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /**

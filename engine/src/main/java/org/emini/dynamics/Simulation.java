@@ -2,15 +2,16 @@ package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
 import org.emini.collision.QueryCallback;
-import org.emini.event.Event;
-import org.emini.event.PhysicsEventListener;
+import org.emini.internal.ChangeQueue;
 import org.emini.internal.Check;
+import org.emini.internal.ElementList;
 import org.emini.math.EMath;
-import org.emini.particle.ParticleEmitter;
-import org.emini.particle.ParticleSystem;
 
 /**
- * The simulated world: bodies, gravity, the solver's settings, and {@link #tick()}.
+ * The physics of a world: bodies, constraints, contacts, the landscape, the simulation area, and
+ * the solve. {@code org.emini.world.World} is the class applications use: it adds what acts before
+ * the solve (external forces) and what reads its result (particles, events) on top of this one, so
+ * the packages read as a pipeline (dynamics below constraint, event and particle, the world above).
  *
  * <p>Defaults are the original engine's: 20 ticks per second, 10 iterations, gravity (0, 100) px/s²
  * pointing down the screen, no damping.
@@ -18,34 +19,59 @@ import org.emini.particle.ParticleSystem;
  * <p>One tick: find the bodies to simulate (all dynamic bodies, or those inside the
  * {@linkplain #setSimulationArea(float, float, float, float) simulation area}); update the
  * broadphase and create contacts for pairs that came close and for bodies near segments of the
- * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver splits the tick into substeps, one per
- * iteration: each substep integrates velocities, warm-starts, makes one soft (position-correcting)
- * pass over the contacts, integrates positions and makes one rigid relax pass. A restitution pass
- * ends the tick. In dynamic-iteration mode the solver stops solving once a substep's impulses
- * differ from those it started with by no more than {@link SolverSettings#getConvergenceTolerance()}
- * (as velocity) and no speculative gap can close before the tick ends: the remaining substeps only
- * integrate, re-applying the converged impulses (warm start) so resting stacks stay put.
+ * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver
+ * splits the tick into substeps, one per iteration: each substep integrates velocities,
+ * warm-starts, makes one soft (position-correcting) pass over the contacts, integrates positions and
+ * makes one rigid relax pass. A restitution pass ends the tick. In dynamic-iteration mode the solver
+ * stops solving once a substep's impulses differ from those it started with by no more than
+ * {@link SolverSettings#getConvergenceTolerance()} (as velocity) and no speculative gap can close
+ * before the tick ends: the remaining substeps only integrate, re-applying the converged impulses
+ * (warm start) so resting stacks stay put.
  *
- * <p>Changing the world while it ticks (from an {@link ExternalForce}, a {@link Constraint} or an
- * event listener): adding and removing bodies, constraints, forces, events and emitters, and
- * replacing the landscape, are applied in the order made when the tick ends, so the lists stay as
- * they were while the tick walks them ({@code remove...} answers whether the element will be gone).
- * {@link #tick()} is not re-entrant. While the solver holds its copies of the bodies (a constraint's
- * callbacks), velocities, impulses and forces set on a body reach the copy and act in this tick, as
- * the manual's jump in a motor's prepare does; changing a body's pose, shape or kind there is
- * refused with an {@link IllegalStateException}, and a body's getters give its state as the tick
- * began (read the current one through the {@link SolverStep}).
+ * <p>Changing the world while it ticks (from an external force, a {@link Constraint} or an event
+ * listener): adding and removing bodies, constraints and the world's other elements, and replacing
+ * the landscape, are applied in the order made when the tick ends, so the lists stay as they were
+ * while the tick walks them ({@code remove...} answers whether the element will be gone).
+ * {@link #tick()} is not re-entrant. While the solver holds its copies of the bodies (a
+ * constraint's callbacks), velocities, impulses and forces set on a body reach the copy and act in
+ * this tick, as the manual's jump in a motor's prepare does; changing a body's pose, shape or kind
+ * there is refused with an {@link IllegalStateException}, and a body's getters give its state as the
+ * tick began (read the current one through the {@link SolverStep}).
  *
  * <p>A tick allocates nothing once the world's arrays have grown to the scene, and the same world
  * with the same inputs gives bit-identical results.
  */
-public final class World {
+public abstract class Simulation {
     private float timestep = 1f / 20f;
     private int iterations = 10;
     private boolean dynamicIterations;
-    // Inside tick(): structural changes wait in pending.
-    private boolean ticking;
-    private final PendingChanges pending = new PendingChanges();
+    // Inside tick(): structural changes wait here.
+    private final ChangeQueue changes = new ChangeQueue();
+    private final ChangeQueue.Target bodyChanges = new ChangeQueue.Target() {
+        @Override
+        public void apply(Object item, boolean add) {
+            if (add) {
+                addBody((Body) item);
+            } else {
+                removeBody((Body) item);
+            }
+        }
+    };
+    private final ChangeQueue.Target landscapeChange = new ChangeQueue.Target() {
+        @Override
+        public void apply(Object item, boolean add) {
+            setLandscape((Landscape) item);
+        }
+    };
+    private final ChangeQueue.Target shapeChange = new ChangeQueue.Target() {
+        @Override
+        public void apply(Object item, boolean add) {
+            Body b = (Body) item;
+            if (b.world == Simulation.this) {
+                bodyShapeChanged(b);
+            }
+        }
+    };
     private float gravityX;
     private float gravityY = 100f;
     private float dampingLateral;
@@ -57,14 +83,8 @@ public final class World {
     private final BroadPhase broadPhase;
     private final ContactManager contacts = new ContactManager(this);
     private final Solver solver = new Solver(this);
-    private Constraint[] constraints = new Constraint[8];
-    private int constraintCount;
-    private ExternalForce[] forces = new ExternalForce[4];
-    private int forceCount;
-    private Event[] events = new Event[4];
-    private int eventCount;
-    private PhysicsEventListener eventListener;
-    private final ParticleSystem particles = new ParticleSystem();
+    private final ElementList<Constraint> constraints = new ElementList<Constraint>(changes, new Constraint[8], "Constraint",
+        "constraint");
     private final float[] aabb = new float[4];
     private Landscape landscape = new Landscape();
     private final SimulationArea area = new SimulationArea();
@@ -75,7 +95,7 @@ public final class World {
     private long tickCount;
 
     /** Creates an empty world with the original engine's defaults. */
-    public World() {
+    protected Simulation() {
         broadPhase = new BroadPhase(settings.getAabbMargin());
     }
 
@@ -251,11 +271,11 @@ public final class World {
      */
     public void addBody(Body body) {
         Check.notNull("World.addBody", "body", body);
-        if (body.world != null || (ticking && pending.willContain(PendingChanges.ADD_BODY, body, false))) {
+        if (body.world != null || (changes.isOpen() && changes.willContain(bodyChanges, body, false))) {
             throw new IllegalArgumentException("World.addBody: " + body + " already belongs to a world");
         }
-        if (ticking) {
-            pending.add(PendingChanges.ADD_BODY, body);
+        if (changes.isOpen()) {
+            changes.add(bodyChanges, body, true);
             return;
         }
         bodies.add(body);
@@ -277,15 +297,19 @@ public final class World {
      * @return true when the body was in this world (during a tick: will be, when the tick ends)
      */
     public boolean removeBody(Body body) {
-        if (ticking) {
-            return body != null && queue(PendingChanges.ADD_BODY, body, body.world == this);
+        if (changes.isOpen()) {
+            boolean there = body != null && willContain(body);
+            if (there) {
+                changes.add(bodyChanges, body, false);
+            }
+            return there;
         }
         if (body == null || body.world != this) {
             return false;
         }
         contacts.destroyContactsOf(body);
         removeConstraintsOf(body);
-        particles.removeEmittersOf(body);
+        bodyRemoved(body);
         broadPhase.destroyProxy(body.proxyId);
         bodies.remove(body);
         body.world = null;
@@ -379,9 +403,9 @@ public final class World {
     }
 
     void bodyShapeChanged(Body b) {
-        if (ticking) {
+        if (changes.isOpen()) {
             // The tick's contacts still name the old shape's parts: drop them when it ends.
-            pending.add(PendingChanges.SHAPE_CHANGED, b);
+            changes.add(shapeChange, b, true);
             bodyGeometryChanged(b);
             return;
         }
@@ -419,8 +443,8 @@ public final class World {
      */
     public void setLandscape(Landscape landscape) {
         Check.notNull("World.setLandscape", "landscape", landscape);
-        if (ticking) {
-            pending.add(PendingChanges.SET_LANDSCAPE, landscape);
+        if (changes.isOpen()) {
+            changes.add(landscapeChange, landscape, true);
             return;
         }
         this.landscape = landscape;
@@ -624,17 +648,7 @@ public final class World {
      * @param constraint the constraint
      */
     public void addConstraint(Constraint constraint) {
-        Check.notNull("World.addConstraint", "constraint", constraint);
-        if (added(PendingChanges.ADD_CONSTRAINT, constraint, indexOf(constraints, constraintCount, constraint) >= 0,
-                "World.addConstraint: the constraint is already in this world")) {
-            return;
-        }
-        if (constraintCount == constraints.length) {
-            Constraint[] grown = new Constraint[constraintCount * 2];
-            System.arraycopy(constraints, 0, grown, 0, constraintCount);
-            constraints = grown;
-        }
-        constraints[constraintCount++] = constraint;
+        constraints.add(constraint);
     }
 
     /**
@@ -644,17 +658,7 @@ public final class World {
      * @return true when it was in this world
      */
     public boolean removeConstraint(Constraint constraint) {
-        if (ticking) {
-            return queue(PendingChanges.ADD_CONSTRAINT, constraint, indexOf(constraints, constraintCount, constraint) >= 0);
-        }
-        for (int i = 0; i < constraintCount; i++) {
-            if (constraints[i] == constraint) {
-                System.arraycopy(constraints, i + 1, constraints, i, constraintCount - i - 1);
-                constraints[--constraintCount] = null;
-                return true;
-            }
-        }
-        return false;
+        return constraints.remove(constraint);
     }
 
     /**
@@ -663,7 +667,7 @@ public final class World {
      * @return the count
      */
     public int getConstraintCount() {
-        return constraintCount;
+        return constraints.count();
     }
 
     /**
@@ -673,264 +677,50 @@ public final class World {
      * @return the constraint
      */
     public Constraint getConstraint(int index) {
-        if (index < 0 || index >= constraintCount) {
-            throw new IndexOutOfBoundsException("World.getConstraint: index " + index + " of " + constraintCount);
-        }
-        return constraints[index];
+        return constraints.get(index);
     }
 
     private void removeConstraintsOf(Body body) {
+        Constraint[] list = constraints.array();
         int kept = 0;
-        for (int i = 0; i < constraintCount; i++) {
-            if (!constraints[i].concernsBody(body)) {
-                constraints[kept++] = constraints[i];
+        for (int i = 0, n = constraints.count(); i < n; i++) {
+            if (!list[i].concernsBody(body)) {
+                list[kept++] = list[i];
             }
         }
-        for (int i = kept; i < constraintCount; i++) {
-            constraints[i] = null;
-        }
-        constraintCount = kept;
+        constraints.truncate(kept);
     }
 
     // ---------------------------------------------------------------------------------------------
-    // External forces
+    // What the world adds on top
 
     /**
-     * Adds an external force, applied at the start of every tick before anything moves.
+     * The queue of structural changes made during a tick, for the world's own lists.
      *
-     * @param force the force
+     * @return the queue, open while a tick runs
      */
-    public void addExternalForce(ExternalForce force) {
-        Check.notNull("World.addExternalForce", "force", force);
-        if (added(PendingChanges.ADD_FORCE, force, indexOf(forces, forceCount, force) >= 0,
-                "World.addExternalForce: the force is already in this world")) {
-            return;
-        }
-        forces = grown(forces, forceCount);
-        forces[forceCount++] = force;
+    protected final ChangeQueue changes() {
+        return changes;
     }
 
     /**
-     * Removes an external force.
+     * Whether a body is in this world, or will be when the running tick ends.
      *
-     * @param force the force
-     * @return true when it was in this world
+     * @param body the body
+     * @return true when it is (will be) in this world
      */
-    public boolean removeExternalForce(ExternalForce force) {
-        int i = indexOf(forces, forceCount, force);
-        if (ticking) {
-            return queue(PendingChanges.ADD_FORCE, force, i >= 0);
-        }
-        if (i < 0) {
-            return false;
-        }
-        forceCount = removeAt(forces, forceCount, i);
-        return true;
+    protected final boolean willContain(Body body) {
+        boolean now = body.world == this;
+        return changes.isOpen() ? changes.willContain(bodyChanges, body, now) : now;
     }
 
     /**
-     * The number of external forces.
+     * Called when a body has left the world, after its contacts and constraints, so that what the
+     * world adds on top can forget it too.
      *
-     * @return the count
+     * @param body the body removed
      */
-    public int getExternalForceCount() {
-        return forceCount;
-    }
-
-    /**
-     * An external force by its position in the world's list (insertion order).
-     *
-     * @param index 0 to {@link #getExternalForceCount()} − 1
-     * @return the force
-     */
-    public ExternalForce getExternalForce(int index) {
-        if (index < 0 || index >= forceCount) {
-            throw new IndexOutOfBoundsException("World.getExternalForce: index " + index + " of " + forceCount);
-        }
-        return forces[index];
-    }
-
-    // ---------------------------------------------------------------------------------------------
-    // Events
-
-    /**
-     * Sets the listener that is told about events. Events are checked at the end of every tick,
-     * in the order they were added, only while a listener is set: without one they cost nothing.
-     *
-     * @param listener the listener, or null to stop checking events
-     */
-    public void setPhysicsEventListener(PhysicsEventListener listener) {
-        eventListener = listener;
-    }
-
-    /**
-     * The listener told about events.
-     *
-     * @return the listener, or null
-     */
-    public PhysicsEventListener getPhysicsEventListener() {
-        return eventListener;
-    }
-
-    /**
-     * Adds an event to check at the end of every tick.
-     *
-     * @param event the event
-     */
-    public void addEvent(Event event) {
-        Check.notNull("World.addEvent", "event", event);
-        if (added(PendingChanges.ADD_EVENT, event, indexOf(events, eventCount, event) >= 0,
-                "World.addEvent: the event is already in this world")) {
-            return;
-        }
-        events = grown(events, eventCount);
-        events[eventCount++] = event;
-    }
-
-    /**
-     * Removes an event.
-     *
-     * @param event the event
-     * @return true when it was in this world
-     */
-    public boolean removeEvent(Event event) {
-        int i = indexOf(events, eventCount, event);
-        if (ticking) {
-            return queue(PendingChanges.ADD_EVENT, event, i >= 0);
-        }
-        if (i < 0) {
-            return false;
-        }
-        eventCount = removeAt(events, eventCount, i);
-        return true;
-    }
-
-    /**
-     * The number of events.
-     *
-     * @return the count
-     */
-    public int getEventCount() {
-        return eventCount;
-    }
-
-    /**
-     * An event by its position in the world's list (insertion order); the position is the
-     * original engine's event id.
-     *
-     * @param index 0 to {@link #getEventCount()} − 1
-     * @return the event
-     */
-    public Event getEvent(int index) {
-        if (index < 0 || index >= eventCount) {
-            throw new IndexOutOfBoundsException("World.getEvent: index " + index + " of " + eventCount);
-        }
-        return events[index];
-    }
-
-    private static int indexOf(Object[] list, int count, Object item) {
-        for (int i = 0; i < count; i++) {
-            if (list[i] == item) {
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    /** The list itself, or a copy twice as long when it is full. */
-    private static <T> T[] grown(T[] list, int count) {
-        return count < list.length ? list : java.util.Arrays.copyOf(list, count * 2);
-    }
-
-    /**
-     * The add half of a structural change: refuses an item already there (or, during a tick, one
-     * that will be), and during a tick queues the add.
-     *
-     * @return true when the add was queued, false when it is to be made now
-     */
-    private boolean added(int addOp, Object item, boolean containedNow, String already) {
-        if (ticking ? pending.willContain(addOp, item, containedNow) : containedNow) {
-            throw new IllegalArgumentException(already);
-        }
-        if (ticking) {
-            pending.add(addOp, item);
-        }
-        return ticking;
-    }
-
-    /** The remove half during a tick: queues the removal of an item that will be there, and says whether it will. */
-    private boolean queue(int addOp, Object item, boolean containedNow) {
-        boolean there = item != null && pending.willContain(addOp, item, containedNow);
-        if (there) {
-            pending.add(addOp + 1, item);
-        }
-        return there;
-    }
-
-    /** Removes an element keeping the order; returns the new count. */
-    private static int removeAt(Object[] list, int count, int i) {
-        System.arraycopy(list, i + 1, list, i, count - i - 1);
-        list[count - 1] = null;
-        return count - 1;
-    }
-
-    // ---------------------------------------------------------------------------------------------
-    // Particle emitters
-
-    /**
-     * Adds a particle emitter; its particles move at the end of every tick, after the bodies.
-     *
-     * @param emitter the emitter, in no other world; its body, if any, must be in this world
-     */
-    public void addParticleEmitter(ParticleEmitter emitter) {
-        Check.notNull("World.addParticleEmitter", "emitter", emitter);
-        Body b = emitter.getBody();
-        boolean bodyHere = b == null || (ticking ? pending.willContain(PendingChanges.ADD_BODY, b, b.world == this) : b.world == this);
-        if (!bodyHere) {
-            throw new IllegalArgumentException("World.addParticleEmitter: the emitter's body " + b + " is not in this world");
-        }
-        if (added(PendingChanges.ADD_EMITTER, emitter, ParticleSystem.isOwned(emitter),
-                "World.addParticleEmitter: " + emitter + " already belongs to a world")) {
-            return;
-        }
-        if (!particles.addEmitter(emitter)) {
-            throw new IllegalArgumentException("World.addParticleEmitter: " + emitter + " already belongs to a world");
-        }
-    }
-
-    /**
-     * Removes a particle emitter (removing its body does this too).
-     *
-     * @param emitter the emitter
-     * @return true when it was in this world
-     */
-    public boolean removeParticleEmitter(ParticleEmitter emitter) {
-        if (ticking) {
-            return queue(PendingChanges.ADD_EMITTER, emitter, particles.contains(emitter));
-        }
-        return particles.removeEmitter(emitter);
-    }
-
-    /**
-     * The number of particle emitters.
-     *
-     * @return the count
-     */
-    public int getParticleEmitterCount() {
-        return particles.getEmitterCount();
-    }
-
-    /**
-     * A particle emitter by its position in the world's list (insertion order).
-     *
-     * @param index 0 to {@link #getParticleEmitterCount()} − 1
-     * @return the emitter
-     */
-    public ParticleEmitter getParticleEmitter(int index) {
-        if (index < 0 || index >= particles.getEmitterCount()) {
-            throw new IndexOutOfBoundsException("World.getParticleEmitter: index " + index + " of " + particles.getEmitterCount());
-        }
-        return particles.getEmitter(index);
+    protected void bodyRemoved(Body body) {
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -991,26 +781,24 @@ public final class World {
      *     what a float holds; the bodies keep their last finite poses when the overflow is found before
      *     they are written back
      */
-    public void tick() {
-        if (ticking) {
-            throw new IllegalStateException("World.tick: called during a tick (from an external force, a constraint or"
-                + " an event listener); call it again after this one returns");
-        }
-        ticking = true;
+    public final void tick() {
+        changes.open("World.tick: called during a tick (from an external force, a constraint or an event listener);"
+            + " call it again after this one returns");
         try {
-            step();
+            step(timestep);
         } finally {
-            ticking = false;
             solver.abort();
-            pending.applyTo(this);
+            changes.close();
         }
     }
 
-    private void step() {
-        float dt = timestep;
-        for (int i = 0; i < forceCount; i++) {
-            forces[i].applyForce(this, dt);
-        }
+    /**
+     * One tick's work: collision detection and the solve, then the tick count grows. The world
+     * applies external forces before it, and moves particles and checks events after it.
+     *
+     * @param dt the timestep (s)
+     */
+    protected void step(float dt) {
         area.collect(this, broadPhase, bodies.ordered(), bodies.count());
         contacts.beginLandscape(landscape);
         updateBroadPhase(dt);
@@ -1021,20 +809,12 @@ public final class World {
             contacts.gatherAll();
         }
         contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
-        Body bad = solver.solve(this, area.bodies, area.count, contacts.active, contacts.activeCount, constraints,
-            constraintCount, broadPhase);
+        Body bad = solver.solve(this, area.bodies, area.count, contacts.active, contacts.activeCount,
+            constraints.array(), constraints.count(), broadPhase);
         if (bad != null) {
             throw leftFiniteRange(bad, solver.bodies.describe(bad));
         }
-        if (particles.getEmitterCount() > 0) {
-            particles.step(this, dt);
-        }
         tickCount++;
-        if (eventListener != null) {
-            for (int i = 0; i < eventCount; i++) {
-                events[i].check(this, eventListener);
-            }
-        }
     }
 
     /** The tick's one error for a body whose state no float holds, with that state described. */

@@ -1,4 +1,6 @@
-package org.emini.dynamics;
+package org.emini.world;
+
+import org.emini.dynamics.Body;
 
 /**
  * A force from outside the simulated system (wind, buoyancy, magnets, a player's thrust), applied
