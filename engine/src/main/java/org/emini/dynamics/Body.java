@@ -52,6 +52,8 @@ public final class Body {
     int slot = -1;
     boolean proxyDirty;
     int solverIndex;
+    // Where the last tick's StepData lists this body (checked there).
+    int stepIndex = -1;
     // Bodies this one never collides with (World.disableCollision): a joint's "collide connected" off.
     Body[] noCollide;
     int noCollideCount;

@@ -38,6 +38,8 @@ public final class Contact {
     // The points, as fields rather than small arrays: one object per contact, so the per-contact
     // passes touch a few adjacent cache lines instead of eight objects.
     int pointCount;
+    // Touching, with the hysteresis StepData describes.
+    boolean touching;
     float normalX;
     float normalY;
     float pointX0;
@@ -173,12 +175,13 @@ public final class Contact {
     }
 
     /**
-     * Whether the shapes touch (or are about to, within the speculative distance).
+     * Whether the shapes touch: since a point of theirs came to zero separation or inside, until
+     * none is within {@link SolverSettings#getSpeculativeDistance()} (see {@link StepData}).
      *
-     * @return true when the contact has points
+     * @return true when touching
      */
     public boolean isTouching() {
-        return pointCount > 0;
+        return touching;
     }
 
     /**

@@ -117,6 +117,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         c.partA = partA;
         c.partB = partB;
         c.pointCount = 0;
+        c.touching = false;
         c.filterDirty = false;
         c.setImpulses(0, 0f, 0f, 0f);
         c.setImpulses(1, 0f, 0f, 0f);
@@ -198,6 +199,10 @@ final class ContactManager implements PairCallback, QueryCallback {
     }
 
     void destroy(Contact c) {
+        if (c.touching) {
+            c.touching = false;
+            world.stepData.contactEnded(c);
+        }
         pairs.remove(c.bodyB != null ? PairCounts.bodies(c.bodyA.slot, c.bodyB.slot)
             : PairCounts.segment(c.bodyA.slot, c.segmentSlot));
         unlink(c, c.bodyA, c.prevA, c.nextA);
@@ -401,6 +406,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         Shape sa = a.getShape();
         Shape sb = b.getShape();
         update(c, manifold, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity());
+        touch(c, speculative);
         return true;
     }
 
@@ -431,7 +437,21 @@ final class ContactManager implements PairCallback, QueryCallback {
         manifold.normalY = -manifold.normalY;
         Shape sa = a.getShape();
         update(c, manifold, sa.getFriction() * l.getFriction(), sa.getElasticity() * l.getElasticity());
+        touch(c, speculative);
         return true;
+    }
+
+    /** Starts touching at zero separation, stops beyond the speculative distance; reports both. */
+    private void touch(Contact c, float speculative) {
+        int n = c.pointCount;
+        float gap = n == 0 ? Float.MAX_VALUE : n == 1 ? c.separation0 : Math.min(c.separation0, c.separation1);
+        if (!c.touching && gap <= 0f) {
+            c.touching = true;
+            world.stepData.contactBegan(c);
+        } else if (c.touching && !(gap <= speculative)) {
+            c.touching = false;
+            world.stepData.contactEnded(c);
+        }
     }
 
     private static float sweepSpeed(Body b) {

@@ -89,6 +89,7 @@ public abstract class Simulation {
     private Landscape landscape = new Landscape();
     private final SimulationArea area = new SimulationArea();
     private final BodyQuery bodyQuery = new BodyQuery();
+    final StepData stepData = new StepData();
     // Bodies whose pose or shape the application changed since the last tick.
     private Body[] dirtyBodies = new Body[16];
     private int dirtyCount;
@@ -761,6 +762,16 @@ public abstract class Simulation {
     }
 
     /**
+     * What the last tick did: the bodies it simulated with their start poses, and the contacts that
+     * began and stopped touching. Read-only; valid until the next tick.
+     *
+     * @return the step data
+     */
+    public StepData getStepData() {
+        return stepData;
+    }
+
+    /**
      * The number of ticks run so far.
      *
      * @return the tick count
@@ -787,6 +798,7 @@ public abstract class Simulation {
         try {
             step(timestep);
         } finally {
+            stepData.end();
             solver.abort();
             changes.close();
         }
@@ -799,7 +811,9 @@ public abstract class Simulation {
      * @param dt the timestep (s)
      */
     protected void step(float dt) {
+        stepData.begin(tickCount);
         area.collect(this, broadPhase, bodies.ordered(), bodies.count());
+        stepData.recordStart(area.bodies, area.count);
         contacts.beginLandscape(landscape);
         updateBroadPhase(dt);
         contacts.updatePairs(broadPhase);
