@@ -5,6 +5,7 @@ import org.emini.collision.QueryCallback;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
 import org.emini.dynamics.Simulation;
+import org.emini.dynamics.StepData;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
@@ -15,8 +16,8 @@ import org.emini.shape.Shape;
  * <p>Obstacles are numbered bodies first ({@code 0 .. bodyCount − 1}), then segments. Only
  * interacting bodies (circles, polygons, multi-shapes) whose motion over the tick overlaps the
  * particles' region are taken, whatever their layers (as in the original). Each keeps its pose at
- * the end of the tick (the solver's result) and its pose at the start, extrapolated back with its
- * final velocities, so a particle's motion can be tested relative to a moving body; a body the
+ * the end of the tick (the solver's result) and its pose at the start (from the tick's
+ * {@link StepData}), so a particle's motion can be tested relative to a moving body; a body the
  * tick did not simulate (static, or frozen outside the simulation area) stands still. The bodies
  * come from {@link Simulation#queryBodies} (exact current boxes: the simulated bodies one by one, the
  * others through the broadphase), so the cost follows the simulated bodies and those near the
@@ -89,6 +90,8 @@ final class ObstacleGrid implements QueryCallback {
 
     private final float[] box = new float[4];
     private float sizeSum;
+    /** The tick's step data, during {@link #build}. */
+    private StepData step;
     /** The landscape being queried in {@link #build}. */
     private Landscape landscape;
     /** The world indices of the bodies a query found. */
@@ -107,13 +110,14 @@ final class ObstacleGrid implements QueryCallback {
      * simulated body moved this tick, so the cost follows the simulated bodies and the bodies near
      * the particles: bodies frozen or static elsewhere cost nothing.
      */
-    void build(Simulation world, float rMinX, float rMinY, float rMaxX, float rMaxY, float dt) {
+    void build(Simulation world, float rMinX, float rMinY, float rMaxX, float rMaxY) {
         count = 0;
         largeCount = 0;
+        step = world.getStepData();
         float maxReach = 0f;
-        int simulated = world.getSimulatedBodyCount();
+        int simulated = step.getBodyCount();
         for (int i = 0; i < simulated; i++) {
-            maxReach = Math.max(maxReach, reach(world.getSimulatedBody(i), dt));
+            maxReach = Math.max(maxReach, reach(step.getBody(i)));
         }
         visited = simulated;
         // First the bodies that touch the region, for the margin.
@@ -121,7 +125,7 @@ final class ObstacleGrid implements QueryCallback {
         float margin = 0f;
         for (int j = 0; j < candidates.count; j++) {
             Body b = world.getBody(candidates.index[j]);
-            if (collides(b) && mayReach(b, dt, rMinX, rMinY, rMaxX, rMaxY)) {
+            if (collides(b) && mayReach(b, rMinX, rMinY, rMaxX, rMaxY)) {
                 shapeBox(b);
                 margin = Math.max(margin, 0.5f * Math.min(box[2] - box[0], box[3] - box[1]));
             }
@@ -141,7 +145,7 @@ final class ObstacleGrid implements QueryCallback {
         sizeSum = 0f;
         for (int j = 0; j < candidates.count; j++) {
             Body b = world.getBody(candidates.index[j]);
-            if (!collides(b) || !mayReach(b, dt, rMinX, rMinY, rMaxX, rMaxY)) {
+            if (!collides(b) || !mayReach(b, rMinX, rMinY, rMaxX, rMaxY)) {
                 continue;
             }
             Shape shape = b.getShape();
@@ -150,7 +154,8 @@ final class ObstacleGrid implements QueryCallback {
             float bc = b.getCos();
             float bs = b.getSin();
             shape.computeAabb(bx, by, bc, bs, box);
-            boolean still = !b.isSimulated();
+            int at = step.indexOf(b);
+            boolean still = at < 0;
             float bvx = still ? 0f : b.getVelocityX();
             float bvy = still ? 0f : b.getVelocityY();
             float bw = still ? 0f : b.getAngularVelocity();
@@ -162,11 +167,11 @@ final class ObstacleGrid implements QueryCallback {
             float sy = by;
             float sc = bc;
             float ss = bs;
-            if (bvx != 0f || bvy != 0f || bw != 0f) {
-                sx = bx - bvx * dt;
-                sy = by - bvy * dt;
-                if (bw != 0f) {
-                    float a = b.getAngle() - bw * dt;
+            if (!still) {
+                sx = step.getStartX(at);
+                sy = step.getStartY(at);
+                float a = step.getStartAngle(at);
+                if (a != b.getAngle()) {
                     sc = EMath.cos(a);
                     ss = EMath.sin(a);
                 }
@@ -205,6 +210,7 @@ final class ObstacleGrid implements QueryCallback {
             landscape.querySegments(rMinX, rMinY, rMaxX, rMaxY, this);
         }
         landscape = null;
+        step = null;
         if (count > 0) {
             index(sizeSum / count);
         }
@@ -216,10 +222,11 @@ final class ObstacleGrid implements QueryCallback {
         return b.isInteracting() && (type == Shape.TYPE_CIRCLE || type == Shape.TYPE_POLYGON || type == Shape.TYPE_MULTI);
     }
 
-    /** How far a body may have moved this tick: nothing unless the tick simulated it. */
-    private static float reach(Body b, float dt) {
-        return b.isSimulated() ? (Math.abs(b.getVelocityX()) + Math.abs(b.getVelocityY())
-            + Math.abs(b.getAngularVelocity()) * b.getShape().getBoundingRadius()) * dt : 0f;
+    /** How far any point of a body moved this tick (a bound): nothing unless the tick simulated it. */
+    private float reach(Body b) {
+        int at = step.indexOf(b);
+        return at < 0 ? 0f : Math.abs(b.getX() - step.getStartX(at)) + Math.abs(b.getY() - step.getStartY(at))
+            + Math.abs(b.getAngle() - step.getStartAngle(at)) * b.getShape().getBoundingRadius();
     }
 
     /** Puts the body's current box in {@link #box}. */
@@ -228,9 +235,9 @@ final class ObstacleGrid implements QueryCallback {
     }
 
     /** Whether a cheap box around the body's motion this tick overlaps the rectangle. */
-    private boolean mayReach(Body b, float dt, float minX, float minY, float maxX, float maxY) {
+    private boolean mayReach(Body b, float minX, float minY, float maxX, float maxY) {
         shapeBox(b);
-        float reach = reach(b, dt);
+        float reach = reach(b);
         return box[0] - reach <= maxX && box[2] + reach >= minX && box[1] - reach <= maxY && box[3] + reach >= minY;
     }
 

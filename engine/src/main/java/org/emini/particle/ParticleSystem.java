@@ -182,7 +182,7 @@ public final class ParticleSystem {
             }
         }
         if (minX <= maxX && EMath.isFinite(maxX - minX) && EMath.isFinite(maxY - minY)) {
-            grid.build(world, minX, minY, maxX, maxY, dt);
+            grid.build(world, minX, minY, maxX, maxY);
             for (int i = 0; i < emitterCount; i++) {
                 ParticleEmitter e = emitters[i];
                 if (e.canCollide()) {
