@@ -1,6 +1,7 @@
 package org.emini.event;
 
 import org.emini.collision.Collider;
+import org.emini.collision.IndexList;
 import org.emini.collision.Manifold;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
@@ -61,6 +62,7 @@ public final class Event {
     private final Manifold manifold;
     private final float[] box;
     private final float[] otherBox;
+    private final IndexList near;
 
     private Event(int type, Body body, Shape shape, Constraint constraint, Body sensor,
             float t1, float t2, float t3, float t4) {
@@ -78,6 +80,7 @@ public final class Event {
         manifold = sensing ? new Manifold() : null;
         box = sensing ? new float[4] : null;
         otherBox = sensing ? new float[4] : null;
+        near = sensing ? new IndexList() : null;
         contacts = type == COLLISION || type == RELATIVE_COLLISION ? new Contact[4] : null;
     }
 
@@ -360,6 +363,8 @@ public final class Event {
                     if (body.getWorld() == world && wanted(body) && holds(body)) {
                         fire(body, body, listener);
                     }
+                } else if (type == SENSOR) {
+                    checkBodiesAtSensor(world, listener);
                 } else {
                     for (int i = 0, n = world.getBodyCount(); i < n; i++) {
                         Body b = world.getBody(i);
@@ -369,6 +374,20 @@ public final class Event {
                     }
                 }
                 break;
+        }
+    }
+
+    /** The bodies whose boxes meet the sensor's, from the broadphase: the rest of the world costs nothing. */
+    private void checkBodiesAtSensor(Simulation world, PhysicsEventListener listener) {
+        float[] sb = box;
+        sensor.getShape().computeAabb(sensor.getX(), sensor.getY(), sensor.getCos(), sensor.getSin(), sb);
+        near.clear();
+        world.queryBodies(sb[0], sb[1], sb[2], sb[3], near);
+        for (int j = 0, n = near.count(); j < n; j++) {
+            Body b = world.getBody(near.get(j));
+            if (wanted(b) && holds(b)) {
+                fire(b, b, listener);
+            }
         }
     }
 

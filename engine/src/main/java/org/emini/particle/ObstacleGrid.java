@@ -1,6 +1,7 @@
 package org.emini.particle;
 
 import java.util.Arrays;
+import org.emini.collision.IndexList;
 import org.emini.collision.QueryCallback;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Landscape;
@@ -95,7 +96,7 @@ final class ObstacleGrid implements QueryCallback {
     /** The landscape being queried in {@link #build}. */
     private Landscape landscape;
     /** The world indices of the bodies a query found. */
-    private final Candidates candidates = new Candidates();
+    private final IndexList candidates = new IndexList();
     /** Bodies looked at by the last {@link #build} (simulated ones and those queries found). */
     int visited;
 
@@ -123,8 +124,8 @@ final class ObstacleGrid implements QueryCallback {
         // First the bodies that touch the region, for the margin.
         query(world, rMinX - maxReach, rMinY - maxReach, rMaxX + maxReach, rMaxY + maxReach);
         float margin = 0f;
-        for (int j = 0; j < candidates.count; j++) {
-            Body b = world.getBody(candidates.index[j]);
+        for (int j = 0; j < candidates.count(); j++) {
+            Body b = world.getBody(candidates.get(j));
             if (collides(b) && mayReach(b, rMinX, rMinY, rMaxX, rMaxY)) {
                 shapeBox(b);
                 margin = Math.max(margin, 0.5f * Math.min(box[2] - box[0], box[3] - box[1]));
@@ -143,8 +144,8 @@ final class ObstacleGrid implements QueryCallback {
         }
         // Then the bodies in reach of the grown region, with both poses, in world order.
         sizeSum = 0f;
-        for (int j = 0; j < candidates.count; j++) {
-            Body b = world.getBody(candidates.index[j]);
+        for (int j = 0; j < candidates.count(); j++) {
+            Body b = world.getBody(candidates.get(j));
             if (!collides(b) || !mayReach(b, rMinX, rMinY, rMaxX, rMaxY)) {
                 continue;
             }
@@ -243,9 +244,9 @@ final class ObstacleGrid implements QueryCallback {
 
     /** Collects in {@link #candidates} the bodies whose box overlaps the rectangle, in world order. */
     private void query(Simulation world, float minX, float minY, float maxX, float maxY) {
-        candidates.count = 0;
+        candidates.clear();
         world.queryBodies(minX, minY, maxX, maxY, candidates);
-        visited += candidates.count;
+        visited += candidates.count();
     }
 
     /** Takes a landscape segment reported by {@link Landscape#querySegments}. */
@@ -442,20 +443,5 @@ final class ObstacleGrid implements QueryCallback {
         maxY = Arrays.copyOf(maxY, n);
         stamp = Arrays.copyOf(stamp, n);
         found = new int[n];
-    }
-
-    /** Collects the body indices a world query reports. */
-    private static final class Candidates implements QueryCallback {
-        int[] index = new int[16];
-        int count;
-
-        @Override
-        public boolean reportProxy(int bodyIndex) {
-            if (count == index.length) {
-                index = Arrays.copyOf(index, 2 * count);
-            }
-            index[count++] = bodyIndex;
-            return true;
-        }
     }
 }
