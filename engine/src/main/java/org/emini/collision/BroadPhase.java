@@ -1,7 +1,5 @@
 package org.emini.collision;
 
-import java.util.Arrays;
-import org.emini.internal.HeapSort;
 import org.emini.math.EMath;
 
 /**
@@ -20,7 +18,8 @@ import org.emini.math.EMath;
  *
  * <p>Each tree is a DynamicTree (this package): leaves inserted by the surface-area heuristic and kept
  * balanced by rotations, so its height stays O(log n) even for sorted insertion orders. This class
- * adds what makes them a broadphase: proxies and their fat boxes, the move buffer and the pairs.
+ * adds what makes them a broadphase: proxies ({@code ProxyTable}) and their fat boxes, and the
+ * moved proxies with their pairs ({@code MovedPairs}).
  *
  * <p>Proxy ids are small non-negative ints, dense in {@code [0, peak proxy count)}; freed ids are
  * reused last-freed first. Everything is deterministic: the same sequence of calls gives the same
@@ -54,31 +53,10 @@ public final class BroadPhase {
     /** The two trees, indexed by {@link #STATIC_TREE} and {@link #DYNAMIC_TREE}; leaves hold proxy ids. */
     private final DynamicTree[] trees = {new DynamicTree(), new DynamicTree()};
 
-    // Proxies, indexed by proxy id. Kept apart from node ids so that proxy ids stay dense.
-    /** Leaf node of a live proxy in its tree, NULL for a free id. */
-    private int[] proxyNode;
-    private int[] proxyUserData;
-    /** The tree a live proxy is in: {@link #STATIC_TREE} or {@link #DYNAMIC_TREE}. */
-    private byte[] proxyTree;
-    /** Next free proxy id of a free id. */
-    private int[] proxyNextFree;
-    /** Index in the move buffer, NULL when the proxy has not moved since the last updatePairs. */
-    private int[] proxyMoveIndex;
-    private int proxyHighWater;
-    private int proxyCount;
-    private int freeProxyHead = NULL;
+    private final ProxyTable proxies = new ProxyTable(INITIAL_CAPACITY);
 
-    private int[] moveBuffer;
-    private int moveCount;
-
-    /** Pairs as (smaller id &lt;&lt; 32 | larger id), so that sorting the longs sorts the pairs. */
-    private long[] pairBuffer;
-    private int pairCount;
-    private int pairLimit = Integer.MAX_VALUE;
-    private boolean pairLimitReached;
-
-    /** Collects one moved proxy's pairs from a tree. */
-    private final PairCollector collector = new PairCollector();
+    /** The proxies moved since the last updatePairs, and their pairs. */
+    private final MovedPairs moved = new MovedPairs(INITIAL_CAPACITY);
 
     /** Number of callbacks currently running; the broadphase is read-only while it is positive. */
     private int lockDepth;
@@ -96,13 +74,6 @@ public final class BroadPhase {
                     "BroadPhase: margin (" + margin + ") must be finite and >= 0");
         }
         this.margin = margin;
-        proxyNode = new int[INITIAL_CAPACITY];
-        proxyUserData = new int[INITIAL_CAPACITY];
-        proxyTree = new byte[INITIAL_CAPACITY];
-        proxyNextFree = new int[INITIAL_CAPACITY];
-        proxyMoveIndex = new int[INITIAL_CAPACITY];
-        moveBuffer = new int[INITIAL_CAPACITY];
-        pairBuffer = new long[INITIAL_CAPACITY];
     }
 
     /**
@@ -135,11 +106,11 @@ public final class BroadPhase {
             return;
         }
         this.margin = margin;
-        for (int proxyId = 0; proxyId < proxyHighWater; proxyId++) {
-            int leaf = proxyNode[proxyId];
+        for (int proxyId = 0; proxyId < proxies.highWater; proxyId++) {
+            int leaf = proxies.node[proxyId];
             if (leaf != NULL) {
-                trees[proxyTree[proxyId]].inflate(leaf, grow);
-                bufferMove(proxyId);
+                trees[proxies.tree[proxyId]].inflate(leaf, grow);
+                moved.add(proxyId);
             }
         }
         trees[STATIC_TREE].refitAll();
@@ -157,7 +128,7 @@ public final class BroadPhase {
         if (limit <= 0) {
             throw new IllegalArgumentException("setPairLimit: limit (" + limit + ") must be > 0");
         }
-        pairLimit = limit;
+        moved.setLimit(limit);
     }
 
     /**
@@ -166,7 +137,7 @@ public final class BroadPhase {
      * @return the limit
      */
     public int getPairLimit() {
-        return pairLimit;
+        return moved.limit();
     }
 
     /**
@@ -176,7 +147,7 @@ public final class BroadPhase {
      * @return true when pairs were dropped
      */
     public boolean isPairLimitReached() {
-        return pairLimitReached;
+        return moved.limitReached();
     }
 
     // ------------------------------------------------------------------------------------------
@@ -216,14 +187,14 @@ public final class BroadPhase {
     public int createProxy(
             float minX, float minY, float maxX, float maxY, int userData, boolean isStatic) {
         checkUnlocked("createProxy");
-        checkBox("createProxy", minX, minY, maxX, maxY);
-        int proxyId = allocateProxy();
+        BoxChecks.box("createProxy", minX, minY, maxX, maxY);
+        int proxyId = proxies.allocate();
         int tree = isStatic ? STATIC_TREE : DYNAMIC_TREE;
-        proxyNode[proxyId] = trees[tree].insert(minX - margin, minY - margin, maxX + margin, maxY + margin, proxyId);
-        proxyUserData[proxyId] = userData;
-        proxyMoveIndex[proxyId] = NULL;
-        proxyTree[proxyId] = (byte) tree;
-        bufferMove(proxyId);
+        proxies.node[proxyId] = trees[tree].insert(minX - margin, minY - margin, maxX + margin, maxY + margin, proxyId);
+        proxies.userData[proxyId] = userData;
+        moved.reset(proxyId);
+        proxies.tree[proxyId] = (byte) tree;
+        moved.add(proxyId);
         return proxyId;
     }
 
@@ -238,12 +209,9 @@ public final class BroadPhase {
     public void destroyProxy(int proxyId) {
         checkUnlocked("destroyProxy");
         checkProxy("destroyProxy", proxyId);
-        unbufferMove(proxyId);
-        trees[proxyTree[proxyId]].remove(proxyNode[proxyId]);
-        proxyNode[proxyId] = NULL;
-        proxyNextFree[proxyId] = freeProxyHead;
-        freeProxyHead = proxyId;
-        proxyCount--;
+        moved.remove(proxyId);
+        trees[proxies.tree[proxyId]].remove(proxies.node[proxyId]);
+        proxies.free(proxyId);
     }
 
     /**
@@ -277,11 +245,11 @@ public final class BroadPhase {
             int proxyId, float minX, float minY, float maxX, float maxY, float dx, float dy) {
         checkUnlocked("moveProxy");
         checkProxy("moveProxy", proxyId);
-        checkBox("moveProxy", minX, minY, maxX, maxY);
-        checkFinite("moveProxy", "dx", dx);
-        checkFinite("moveProxy", "dy", dy);
-        int leaf = proxyNode[proxyId];
-        DynamicTree tree = trees[proxyTree[proxyId]];
+        BoxChecks.box("moveProxy", minX, minY, maxX, maxY);
+        BoxChecks.finite("moveProxy", "dx", dx);
+        BoxChecks.finite("moveProxy", "dy", dy);
+        int leaf = proxies.node[proxyId];
+        DynamicTree tree = trees[proxies.tree[proxyId]];
 
         float fatMinX = minX - margin;
         float fatMinY = minY - margin;
@@ -322,7 +290,7 @@ public final class BroadPhase {
         }
 
         tree.move(leaf, fatMinX, fatMinY, fatMaxX, fatMaxY);
-        bufferMove(proxyId);
+        moved.add(proxyId);
         return true;
     }
 
@@ -339,19 +307,19 @@ public final class BroadPhase {
         checkUnlocked("setStatic");
         checkProxy("setStatic", proxyId);
         int tree = isStatic ? STATIC_TREE : DYNAMIC_TREE;
-        if (proxyTree[proxyId] == tree) {
+        if (proxies.tree[proxyId] == tree) {
             return;
         }
-        DynamicTree from = trees[proxyTree[proxyId]];
-        int leaf = proxyNode[proxyId];
+        DynamicTree from = trees[proxies.tree[proxyId]];
+        int leaf = proxies.node[proxyId];
         float minX = from.minX(leaf);
         float minY = from.minY(leaf);
         float maxX = from.maxX(leaf);
         float maxY = from.maxY(leaf);
         from.remove(leaf);
-        proxyNode[proxyId] = trees[tree].insert(minX, minY, maxX, maxY, proxyId);
-        proxyTree[proxyId] = (byte) tree;
-        bufferMove(proxyId);
+        proxies.node[proxyId] = trees[tree].insert(minX, minY, maxX, maxY, proxyId);
+        proxies.tree[proxyId] = (byte) tree;
+        moved.add(proxyId);
     }
 
     /**
@@ -363,7 +331,7 @@ public final class BroadPhase {
      */
     public boolean isStatic(int proxyId) {
         checkProxy("isStatic", proxyId);
-        return proxyTree[proxyId] == STATIC_TREE;
+        return proxies.tree[proxyId] == STATIC_TREE;
     }
 
     /**
@@ -377,7 +345,7 @@ public final class BroadPhase {
     public void touchProxy(int proxyId) {
         checkUnlocked("touchProxy");
         checkProxy("touchProxy", proxyId);
-        bufferMove(proxyId);
+        moved.add(proxyId);
     }
 
     /**
@@ -391,10 +359,10 @@ public final class BroadPhase {
     public boolean testOverlap(int proxyA, int proxyB) {
         checkProxy("testOverlap", proxyA);
         checkProxy("testOverlap", proxyB);
-        DynamicTree ta = trees[proxyTree[proxyA]];
-        DynamicTree tb = trees[proxyTree[proxyB]];
-        int a = proxyNode[proxyA];
-        int b = proxyNode[proxyB];
+        DynamicTree ta = trees[proxies.tree[proxyA]];
+        DynamicTree tb = trees[proxies.tree[proxyB]];
+        int a = proxies.node[proxyA];
+        int b = proxies.node[proxyB];
         return ta.minX(a) <= tb.maxX(b) && tb.minX(b) <= ta.maxX(a)
                 && ta.minY(a) <= tb.maxY(b) && tb.minY(b) <= ta.maxY(a);
     }
@@ -421,70 +389,33 @@ public final class BroadPhase {
         if (callback == null) {
             throw new IllegalArgumentException("updatePairs: callback is null");
         }
-        pairCount = 0;
-        pairLimitReached = false;
-        for (int i = 0; i < moveCount && !pairLimitReached; i++) {
-            collectPairs(moveBuffer[i]);
+        moved.beginPairs();
+        for (int i = 0, n = moved.moveCount(); i < n && !moved.limitReached(); i++) {
+            int proxy = moved.moved(i);
+            // Moved proxies meet the dynamic ones, and the static ones too when dynamic themselves.
+            collectPairs(proxy, DYNAMIC_TREE);
+            if (proxies.tree[proxy] == DYNAMIC_TREE && !moved.limitReached()) {
+                collectPairs(proxy, STATIC_TREE);
+            }
         }
         // Emptied before the callbacks run, so that a throwing callback leaves a clean state.
-        for (int i = 0; i < moveCount; i++) {
-            proxyMoveIndex[moveBuffer[i]] = NULL;
-        }
-        moveCount = 0;
-        HeapSort.sort(pairBuffer, pairCount);
+        moved.endPairs();
 
         lockDepth++;
         try {
-            for (int i = 0; i < pairCount; i++) {
-                long key = pairBuffer[i];
-                callback.addPair(proxyUserData[(int) (key >>> 32)], proxyUserData[(int) key]);
+            for (int i = 0, n = moved.pairCount(); i < n; i++) {
+                long key = moved.pair(i);
+                callback.addPair(proxies.userData[(int) (key >>> 32)], proxies.userData[(int) key]);
             }
         } finally {
             lockDepth--;
         }
     }
 
-    /**
-     * Adds to the pair buffer the pairs of one moved proxy that it owns: with the dynamic proxies,
-     * and with the static ones if it is dynamic itself.
-     */
-    private void collectPairs(int queryProxy) {
-        collectPairs(queryProxy, DYNAMIC_TREE);
-        if (proxyTree[queryProxy] == DYNAMIC_TREE && !pairLimitReached) {
-            collectPairs(queryProxy, STATIC_TREE);
-        }
-    }
-
     private void collectPairs(int queryProxy, int tree) {
-        DynamicTree own = trees[proxyTree[queryProxy]];
-        int leaf = proxyNode[queryProxy];
-        collector.queryProxy = queryProxy;
-        if (!trees[tree].query(own.minX(leaf), own.minY(leaf), own.maxX(leaf), own.maxY(leaf), collector)) {
-            pairLimitReached = true;
-        }
-    }
-
-    /** Buffers the pairs of one moved proxy; stops the query at the pair limit. */
-    private final class PairCollector implements QueryCallback {
-        int queryProxy;
-
-        @Override
-        public boolean reportProxy(int other) {
-            // When both moved, the pair is reported while querying the smaller id only.
-            if (other == queryProxy || (other < queryProxy && proxyMoveIndex[other] != NULL)) {
-                return true;
-            }
-            if (pairCount == pairLimit) {
-                return false;
-            }
-            if (pairCount == pairBuffer.length) {
-                pairBuffer = Arrays.copyOf(pairBuffer, (int) Math.min(pairLimit, 2L * pairCount));
-            }
-            pairBuffer[pairCount++] = other < queryProxy
-                    ? ((long) other << 32) | queryProxy
-                    : ((long) queryProxy << 32) | other;
-            return true;
-        }
+        DynamicTree own = trees[proxies.tree[queryProxy]];
+        int leaf = proxies.node[queryProxy];
+        moved.collect(queryProxy, trees[tree], own.minX(leaf), own.minY(leaf), own.maxX(leaf), own.maxY(leaf));
     }
 
     /**
@@ -500,7 +431,7 @@ public final class BroadPhase {
      *     is null
      */
     public void query(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
-        checkQuery("query", minX, minY, maxX, maxY, callback);
+        BoxChecks.query("query", minX, minY, maxX, maxY, callback);
         if (queryTree(STATIC_TREE, minX, minY, maxX, maxY, callback)) {
             queryTree(DYNAMIC_TREE, minX, minY, maxX, maxY, callback);
         }
@@ -518,7 +449,7 @@ public final class BroadPhase {
      *     is null
      */
     public void queryStatic(float minX, float minY, float maxX, float maxY, QueryCallback callback) {
-        checkQuery("queryStatic", minX, minY, maxX, maxY, callback);
+        BoxChecks.query("queryStatic", minX, minY, maxX, maxY, callback);
         queryTree(STATIC_TREE, minX, minY, maxX, maxY, callback);
     }
 
@@ -535,16 +466,8 @@ public final class BroadPhase {
      */
     public void queryDynamic(
             float minX, float minY, float maxX, float maxY, QueryCallback callback) {
-        checkQuery("queryDynamic", minX, minY, maxX, maxY, callback);
+        BoxChecks.query("queryDynamic", minX, minY, maxX, maxY, callback);
         queryTree(DYNAMIC_TREE, minX, minY, maxX, maxY, callback);
-    }
-
-    private static void checkQuery(
-            String method, float minX, float minY, float maxX, float maxY, QueryCallback callback) {
-        checkBox(method, minX, minY, maxX, maxY);
-        if (callback == null) {
-            throw new IllegalArgumentException(method + ": callback is null");
-        }
     }
 
     /** Queries one tree; returns false if the callback stopped the query. */
@@ -570,7 +493,7 @@ public final class BroadPhase {
      */
     public int getUserData(int proxyId) {
         checkProxy("getUserData", proxyId);
-        return proxyUserData[proxyId];
+        return proxies.userData[proxyId];
     }
 
     /**
@@ -582,7 +505,7 @@ public final class BroadPhase {
      */
     public float getFatMinX(int proxyId) {
         checkProxy("getFatMinX", proxyId);
-        return trees[proxyTree[proxyId]].minX(proxyNode[proxyId]);
+        return trees[proxies.tree[proxyId]].minX(proxies.node[proxyId]);
     }
 
     /**
@@ -594,7 +517,7 @@ public final class BroadPhase {
      */
     public float getFatMinY(int proxyId) {
         checkProxy("getFatMinY", proxyId);
-        return trees[proxyTree[proxyId]].minY(proxyNode[proxyId]);
+        return trees[proxies.tree[proxyId]].minY(proxies.node[proxyId]);
     }
 
     /**
@@ -606,7 +529,7 @@ public final class BroadPhase {
      */
     public float getFatMaxX(int proxyId) {
         checkProxy("getFatMaxX", proxyId);
-        return trees[proxyTree[proxyId]].maxX(proxyNode[proxyId]);
+        return trees[proxies.tree[proxyId]].maxX(proxies.node[proxyId]);
     }
 
     /**
@@ -618,7 +541,7 @@ public final class BroadPhase {
      */
     public float getFatMaxY(int proxyId) {
         checkProxy("getFatMaxY", proxyId);
-        return trees[proxyTree[proxyId]].maxY(proxyNode[proxyId]);
+        return trees[proxies.tree[proxyId]].maxY(proxies.node[proxyId]);
     }
 
     /**
@@ -631,7 +554,7 @@ public final class BroadPhase {
      */
     public boolean isMoved(int proxyId) {
         checkProxy("isMoved", proxyId);
-        return proxyMoveIndex[proxyId] != NULL;
+        return moved.contains(proxyId);
     }
 
     /**
@@ -640,7 +563,7 @@ public final class BroadPhase {
      * @return the proxy count
      */
     public int getProxyCount() {
-        return proxyCount;
+        return proxies.count;
     }
 
     /**
@@ -659,7 +582,7 @@ public final class BroadPhase {
      * @return the number of proxies whose pairs the next {@link #updatePairs} reports
      */
     public int getMoveCount() {
-        return moveCount;
+        return moved.moveCount();
     }
 
     /**
@@ -674,58 +597,14 @@ public final class BroadPhase {
      */
     public void shiftOrigin(float dx, float dy) {
         checkUnlocked("shiftOrigin");
-        checkFinite("shiftOrigin", "dx", dx);
-        checkFinite("shiftOrigin", "dy", dy);
+        BoxChecks.finite("shiftOrigin", "dx", dx);
+        BoxChecks.finite("shiftOrigin", "dy", dy);
         trees[STATIC_TREE].shift(dx, dy);
         trees[DYNAMIC_TREE].shift(dx, dy);
     }
 
     // ------------------------------------------------------------------------------------------
     // Proxy ids and the move buffer
-
-    private int allocateProxy() {
-        int proxyId;
-        if (freeProxyHead != NULL) {
-            proxyId = freeProxyHead;
-            freeProxyHead = proxyNextFree[proxyId];
-        } else {
-            if (proxyHighWater == proxyNode.length) {
-                int capacity = proxyHighWater * 2;
-                proxyNode = Arrays.copyOf(proxyNode, capacity);
-                proxyUserData = Arrays.copyOf(proxyUserData, capacity);
-                proxyTree = Arrays.copyOf(proxyTree, capacity);
-                proxyNextFree = Arrays.copyOf(proxyNextFree, capacity);
-                proxyMoveIndex = Arrays.copyOf(proxyMoveIndex, capacity);
-            }
-            proxyId = proxyHighWater++;
-        }
-        proxyNextFree[proxyId] = NULL;
-        proxyCount++;
-        return proxyId;
-    }
-
-    private void bufferMove(int proxyId) {
-        if (proxyMoveIndex[proxyId] != NULL) {
-            return;
-        }
-        if (moveCount == moveBuffer.length) {
-            moveBuffer = Arrays.copyOf(moveBuffer, moveCount * 2);
-        }
-        proxyMoveIndex[proxyId] = moveCount;
-        moveBuffer[moveCount++] = proxyId;
-    }
-
-    /** Removes a proxy from the move buffer by moving the last entry into its slot. */
-    private void unbufferMove(int proxyId) {
-        int index = proxyMoveIndex[proxyId];
-        if (index == NULL) {
-            return;
-        }
-        int last = moveBuffer[--moveCount];
-        moveBuffer[index] = last;
-        proxyMoveIndex[last] = index;
-        proxyMoveIndex[proxyId] = NULL;
-    }
 
     // ------------------------------------------------------------------------------------------
     // Validation
@@ -738,40 +617,25 @@ public final class BroadPhase {
      */
     public void validate() {
         int leaves = trees[STATIC_TREE].validate("BroadPhase") + trees[DYNAMIC_TREE].validate("BroadPhase");
-        checkState(leaves == proxyCount, "%d leaves but %d proxies", leaves, proxyCount);
+        checkState(leaves == proxies.count, "%d leaves but %d proxies", leaves, proxies.count);
 
         int live = 0;
-        int moved = 0;
-        for (int p = 0; p < proxyHighWater; p++) {
-            int node = proxyNode[p];
+        boolean[] isLive = new boolean[proxies.highWater];
+        for (int p = 0; p < proxies.highWater; p++) {
+            int node = proxies.node[p];
             if (node == NULL) {
-                checkState(proxyMoveIndex[p] == NULL, "free proxy %d is in the move buffer", p, 0);
                 continue;
             }
             live++;
-            checkState(proxyTree[p] == STATIC_TREE || proxyTree[p] == DYNAMIC_TREE, "proxy %d has tree %d", p,
-                    proxyTree[p]);
-            checkState(trees[proxyTree[p]].holds(node, p), "proxy %d points to node %d, not its leaf", p, node);
-            int index = proxyMoveIndex[p];
-            if (index != NULL) {
-                moved++;
-                checkState(index >= 0 && index < moveCount && moveBuffer[index] == p,
-                        "proxy %d has bad move index %d", p, index);
-            }
+            isLive[p] = true;
+            checkState(proxies.tree[p] == STATIC_TREE || proxies.tree[p] == DYNAMIC_TREE, "proxy %d has tree %d", p,
+                    proxies.tree[p]);
+            checkState(trees[proxies.tree[p]].holds(node, p), "proxy %d points to node %d, not its leaf", p, node);
         }
-        checkState(live == proxyCount, "%d live proxies, count says %d", live, proxyCount);
-        checkState(moved == moveCount, "%d moved proxies, move count says %d", moved, moveCount);
+        checkState(live == proxies.count, "%d live proxies, count says %d", live, proxies.count);
+        moved.validate(isLive, proxies.highWater);
 
-        int freeProxies = 0;
-        for (int p = freeProxyHead; p != NULL; p = proxyNextFree[p]) {
-            checkState(p >= 0 && p < proxyHighWater && proxyNode[p] == NULL,
-                    "proxy free list holds live or bad id %d", p, 0);
-            freeProxies++;
-            checkState(freeProxies <= proxyHighWater - proxyCount,
-                    "proxy free list too long at %d", p, freeProxies);
-        }
-        checkState(freeProxies + proxyCount == proxyHighWater, "%d free proxy ids, expected %d",
-                freeProxies, proxyHighWater - proxyCount);
+        proxies.validateFreeList();
     }
 
     private static void checkState(boolean ok, String format, int a, int b) {
@@ -789,31 +653,9 @@ public final class BroadPhase {
     }
 
     private void checkProxy(String method, int proxyId) {
-        if (proxyId < 0 || proxyId >= proxyHighWater || proxyNode[proxyId] == NULL) {
+        if (!proxies.isLive(proxyId)) {
             throw new IllegalArgumentException(
                     method + ": unknown or destroyed proxy id " + proxyId);
-        }
-    }
-
-    private static void checkBox(String method, float minX, float minY, float maxX, float maxY) {
-        checkFinite(method, "minX", minX);
-        checkFinite(method, "minY", minY);
-        checkFinite(method, "maxX", maxX);
-        checkFinite(method, "maxY", maxY);
-        if (minX > maxX) {
-            throw new IllegalArgumentException(
-                    method + ": minX (" + minX + ") > maxX (" + maxX + ")");
-        }
-        if (minY > maxY) {
-            throw new IllegalArgumentException(
-                    method + ": minY (" + minY + ") > maxY (" + maxY + ")");
-        }
-    }
-
-    private static void checkFinite(String method, String name, float value) {
-        if (!EMath.isFinite(value)) {
-            throw new IllegalArgumentException(
-                    method + ": " + name + " (" + value + ") is not finite");
         }
     }
 }

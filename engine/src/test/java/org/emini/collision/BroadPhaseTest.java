@@ -635,13 +635,6 @@ class BroadPhaseTest {
     // ---------------------------------------------------------------------------------------------
     // Validation
 
-    private static void corrupt(BroadPhase bp, String field, int index, Object value)
-            throws ReflectiveOperationException {
-        Field f = BroadPhase.class.getDeclaredField(field);
-        f.setAccessible(true);
-        java.lang.reflect.Array.set(f.get(bp), index, value);
-    }
-
     /** The broadphase's dynamic tree (all proxies of smallTree are dynamic). */
     private static DynamicTree dynamicTree(BroadPhase bp) throws ReflectiveOperationException {
         Field f = BroadPhase.class.getDeclaredField("trees");
@@ -686,7 +679,11 @@ class BroadPhaseTest {
         assertThrows(IllegalStateException.class, bp::validate);
 
         bp = smallTree();
-        corrupt(bp, "proxyMoveIndex", 3, 0);
+        Field movedField = BroadPhase.class.getDeclaredField("moved");
+        movedField.setAccessible(true);
+        Field moveIndex = MovedPairs.class.getDeclaredField("moveIndex");
+        moveIndex.setAccessible(true);
+        ((int[]) moveIndex.get(movedField.get(bp)))[3] = 0;
         assertThrows(IllegalStateException.class, bp::validate);
     }
 
