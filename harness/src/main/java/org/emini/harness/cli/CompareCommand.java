@@ -1,24 +1,19 @@
 package org.emini.harness.cli;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import org.emini.harness.build.BuiltWorld;
 import org.emini.harness.build.WorldBuilder;
 import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.closedform.ClosedForms;
+import org.emini.harness.load.Limits;
 import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.oracle.CompareReport;
@@ -28,9 +23,7 @@ import org.emini.harness.oracle.OracleRunner;
 import org.emini.harness.oracle.OracleScene;
 import org.emini.harness.oracle.OracleSettings;
 import org.emini.harness.oracle.TraceReader;
-import org.emini.harness.report.TraceWriter;
 import org.emini.harness.run.SceneResult;
-import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.run.Trace;
 import org.emini.harness.scenario.Scenario;
 import picocli.CommandLine.Command;
@@ -82,16 +75,11 @@ final class CompareCommand implements Callable<Integer> {
             System.out.println("oracle environment ready: " + interpreter);
             return 0;
         }
-        ScenarioLoader loader = library.loader();
-        List<Path> files = library.files(spec, paths);
-        files = scenesForTheOracle(files);
-        List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
+        List<ScenarioLoader.Loaded> loaded = SceneBatch.load(library.loader(), scenesForTheOracle(library.files(spec, paths)));
         List<Path> valid = new ArrayList<>();
-        for (Path f : files) {
-            ScenarioLoader.Loaded l = loader.load(f);
-            loaded.add(l);
+        for (ScenarioLoader.Loaded l : loaded) {
             if (l.ok()) {
-                valid.add(f);
+                valid.add(l.file());
             }
         }
         int threads = jobs != null ? Options.atLeast(spec, "--jobs", jobs, 1) : Runtime.getRuntime().availableProcessors();
@@ -101,18 +89,8 @@ final class CompareCommand implements Callable<Integer> {
             : new OracleRunner(interpreter, library.schemaFile()).start(valid, oracleTraces, threads);
 
         // The engine runs while the oracle does.
-        Map<ScenarioLoader.Loaded, Future<SceneResult>> engine = new LinkedHashMap<>();
-        ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
-            Thread t = new Thread(r, "engine");
-            t.setDaemon(true);
-            return t;
-        });
-        try {
-            for (ScenarioLoader.Loaded l : loaded) {
-                if (l.ok()) {
-                    engine.put(l, pool.submit(() -> runEngine(l.scenario(), engineTraces)));
-                }
-            }
+        try (SceneBatch engine = new SceneBatch(loaded, threads,
+                new SceneBatch.Settings(engineTraces, true, true, Limits.SCENE_SECONDS, n -> { }))) {
             Map<Path, OracleScene> oracle = oracleRun == null ? Map.of() : oracleRun.await();
             List<Comparison.Scene> scenes = new ArrayList<>();
             int width = 10;
@@ -125,7 +103,7 @@ final class CompareCommand implements Callable<Integer> {
                     c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, "ERROR",
                             "invalid scene: " + l.problems(), "ERROR", null, OracleSettings.DEFAULT, null, List.of());
                 } else {
-                    SceneResult r = get(engine.get(l));
+                    SceneResult r = engine.result(l);
                     OracleScene o = oracle.get(l.file().toAbsolutePath().normalize());
                     Trace oracleTrace = o != null && o.ok() ? TraceReader.read(Path.of(o.trace())).trace() : null;
                     c = Comparison.compare(l.scenario(), r.status().label() + (r.message().isEmpty() ? "" : ": "
@@ -140,21 +118,7 @@ final class CompareCommand implements Callable<Integer> {
             CompareReport.write(reports, scenes, summary, command, pymunkVersion(oracleHome));
             System.out.println("report: " + reports.resolve("summary.md") + ", " + reports.resolve("compare.json"));
             return summary.failed() ? 1 : 0;
-        } finally {
-            pool.shutdownNow();
         }
-    }
-
-    private static SceneResult runEngine(Scenario s, Path traces) {
-        SceneResult r = ScenarioRunner.run(s, n -> { });
-        if (r.trace() != null) {
-            try {
-                TraceWriter.write(TraceWriter.fileFor(traces, r.scene()), r.scene(), "emini", r.trace());
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-        }
-        return r;
     }
 
     /**
@@ -206,17 +170,6 @@ final class CompareCommand implements Callable<Integer> {
                 c.rows().size(), agree, differ, engine, oracle, tie);
         String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", c.status(), c.scene(), counts);
         return c.note().isEmpty() ? line : line + "  [" + c.note() + "]";
-    }
-
-    private static SceneResult get(Future<SceneResult> f) throws IOException, InterruptedException {
-        try {
-            return f.get();
-        } catch (ExecutionException e) {
-            if (e.getCause() instanceof UncheckedIOException io) {
-                throw io.getCause();
-            }
-            throw new IllegalStateException(e.getCause());
-        }
     }
 
     /**
