@@ -9,9 +9,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import org.emini.harness.build.BuiltWorld;
-import org.emini.harness.build.WorldBuilder;
-import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.closedform.ClosedForms;
 import org.emini.harness.load.Limits;
 import org.emini.harness.load.ScenarioFiles;
@@ -25,7 +22,6 @@ import org.emini.harness.oracle.OracleSettings;
 import org.emini.harness.oracle.TraceReader;
 import org.emini.harness.run.SceneResult;
 import org.emini.harness.run.Trace;
-import org.emini.harness.scenario.Scenario;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -107,7 +103,7 @@ final class CompareCommand implements Callable<Integer> {
                     OracleScene o = oracle.get(l.file().toAbsolutePath().normalize());
                     Trace oracleTrace = o != null && o.ok() ? TraceReader.read(Path.of(o.trace())).trace() : null;
                     c = Comparison.compare(l.scenario(), r.status().label() + (r.message().isEmpty() ? "" : ": "
-                            + r.message()), r.trace(), o, oracleTrace, closedForm(l.scenario()));
+                            + r.message()), r.trace(), o, oracleTrace, ClosedForms.of(l.scenario()));
                 }
                 scenes.add(c);
                 System.out.println(line(c, width));
@@ -118,29 +114,6 @@ final class CompareCommand implements Callable<Integer> {
             CompareReport.write(reports, scenes, summary, command, pymunkVersion(oracleHome));
             System.out.println("report: " + reports.resolve("summary.md") + ", " + reports.resolve("compare.json"));
             return summary.failed() ? 1 : 0;
-        }
-    }
-
-    /**
-     * The scene's closed-form model, built on a world without the elements the engine may lack (only
-     * the pendulum model reads the world, for the bob's inertia).
-     */
-    static ClosedForm closedForm(Scenario s) {
-        if (s.closedForm() == null) {
-            return null;
-        }
-        Scenario bodiesOnly = new Scenario(s.name(), s.file(), s.description(), s.category(), s.world(), s.shapes(),
-                s.bodies(), s.actions(), Map.of(), s.run(), s.closedForm(), s.oracle(), s.knownFailure());
-        BuiltWorld built;
-        try {
-            built = WorldBuilder.build(bodiesOnly);
-        } catch (Exception e) {
-            built = null;
-        }
-        try {
-            return ClosedForms.create(bodiesOnly, built);
-        } catch (RuntimeException e) {
-            return null;
         }
     }
 
