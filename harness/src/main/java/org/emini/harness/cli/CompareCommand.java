@@ -14,6 +14,7 @@ import org.emini.harness.load.Limits;
 import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.oracle.CompareReport;
+import org.emini.harness.oracle.CompareStatus;
 import org.emini.harness.oracle.Comparison;
 import org.emini.harness.oracle.OracleEnvironment;
 import org.emini.harness.oracle.OracleRunner;
@@ -21,6 +22,7 @@ import org.emini.harness.oracle.OracleScene;
 import org.emini.harness.oracle.OracleSettings;
 import org.emini.harness.oracle.TraceReader;
 import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.Status;
 import org.emini.harness.run.Trace;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -96,8 +98,9 @@ final class CompareCommand implements Callable<Integer> {
             for (ScenarioLoader.Loaded l : loaded) {
                 Comparison.Scene c;
                 if (!l.ok()) {
-                    c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, "ERROR",
-                            "invalid scene: " + l.problems(), "ERROR", null, OracleSettings.DEFAULT, null, List.of());
+                    c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, CompareStatus.ERROR,
+                            "invalid scene: " + l.problems(), Status.ERROR.label(), null, OracleSettings.DEFAULT, null,
+                            List.of());
                 } else {
                     SceneResult r = engine.result(l);
                     OracleScene o = oracle.get(l.file().toAbsolutePath().normalize());
@@ -131,17 +134,10 @@ final class CompareCommand implements Callable<Integer> {
     }
 
     private static String line(Comparison.Scene c, int width) {
-        int agree = 0, differ = 0, engine = 0, oracle = 0, tie = 0;
-        for (Comparison.Row r : c.rows()) {
-            agree += r.agreement().equals("agree") ? 1 : 0;
-            differ += r.agreement().equals("differ") ? 1 : 0;
-            engine += r.closer().equals("engine") ? 1 : 0;
-            oracle += r.closer().equals("oracle") ? 1 : 0;
-            tie += r.closer().equals("tie") ? 1 : 0;
-        }
+        CompareReport.Summary n = CompareReport.Summary.of(List.of(c), 0);
         String counts = String.format(Locale.ROOT, "%3d rows: %2d agree %2d differ; closer: engine %d, pymunk %d, tie %d",
-                c.rows().size(), agree, differ, engine, oracle, tie);
-        String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", c.status(), c.scene(), counts);
+                c.rows().size(), n.agree(), n.differ(), n.engineCloser(), n.oracleCloser(), n.ties());
+        String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", c.status().label(), c.scene(), counts);
         return c.note().isEmpty() ? line : line + "  [" + c.note() + "]";
     }
 
