@@ -1,5 +1,8 @@
 package org.emini.harness;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Assertions;
@@ -24,6 +27,19 @@ public final class Repo {
     /** The scenario schema. */
     public static Path schema() {
         return scenarios().resolve("scenario.schema.json");
+    }
+
+    /**
+     * The library's schema with an emitter key, {@code burst}, that no builder reads (a schema ahead of
+     * the harness), written into {@code dir}: a valid scene that uses it has an element the engine lacks.
+     */
+    public static Path schemaAhead(Path dir) throws IOException {
+        ObjectMapper json = new ObjectMapper();
+        ObjectNode schema = (ObjectNode) json.readTree(schema().toFile());
+        ((ObjectNode) schema.path("$defs").path("emitter").path("properties")).putObject("burst").put("type", "integer");
+        Path file = Files.createDirectories(dir.resolve("schema")).resolve("scenario.schema.json");
+        json.writeValue(file.toFile(), schema);
+        return file;
     }
 
     /**

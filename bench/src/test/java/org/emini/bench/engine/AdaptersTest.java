@@ -154,9 +154,7 @@ class AdaptersTest {
     @ValueSource(strings = {"dyn4j", "jbox2d", "gdx-box2d"})
     void scenesWithElementsTheAdaptersLackAreUnsupported(String engine) {
         Scenario s = SCENES.load("bench/pyramid-20");
-        Scenario withLandscape = new Scenario(s.name(), s.file(), s.description(), s.category(), s.world(), s.shapes(),
-            s.bodies(), s.actions(), java.util.Map.of("landscape", new org.emini.harness.scenario.Section(null, null)),
-            s.run(), s.closedForm(), s.oracle(), s.knownFailure());
+        Scenario withLandscape = s.withElements(java.util.Map.of("landscape", new org.emini.harness.scenario.Section(null, null)));
         assertThrows(UnsupportedSceneException.class, () -> Engines.create(engine).build(withLandscape));
     }
 }

@@ -1,38 +1,29 @@
 package org.emini.harness.cli;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import org.emini.harness.build.BuiltWorld;
-import org.emini.harness.build.WorldBuilder;
-import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.closedform.ClosedForms;
+import org.emini.harness.load.Limits;
 import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.oracle.CompareReport;
+import org.emini.harness.oracle.CompareStatus;
 import org.emini.harness.oracle.Comparison;
 import org.emini.harness.oracle.OracleEnvironment;
 import org.emini.harness.oracle.OracleRunner;
 import org.emini.harness.oracle.OracleScene;
 import org.emini.harness.oracle.OracleSettings;
 import org.emini.harness.oracle.TraceReader;
-import org.emini.harness.report.TraceWriter;
 import org.emini.harness.run.SceneResult;
-import org.emini.harness.run.ScenarioRunner;
+import org.emini.harness.run.Status;
 import org.emini.harness.run.Trace;
-import org.emini.harness.scenario.Scenario;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -82,16 +73,11 @@ final class CompareCommand implements Callable<Integer> {
             System.out.println("oracle environment ready: " + interpreter);
             return 0;
         }
-        ScenarioLoader loader = library.loader();
-        List<Path> files = library.files(spec, paths);
-        files = scenesForTheOracle(files);
-        List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
+        List<ScenarioLoader.Loaded> loaded = SceneBatch.load(library.loader(), scenesForTheOracle(library.files(spec, paths)));
         List<Path> valid = new ArrayList<>();
-        for (Path f : files) {
-            ScenarioLoader.Loaded l = loader.load(f);
-            loaded.add(l);
+        for (ScenarioLoader.Loaded l : loaded) {
             if (l.ok()) {
-                valid.add(f);
+                valid.add(l.file());
             }
         }
         int threads = jobs != null ? Options.atLeast(spec, "--jobs", jobs, 1) : Runtime.getRuntime().availableProcessors();
@@ -101,18 +87,8 @@ final class CompareCommand implements Callable<Integer> {
             : new OracleRunner(interpreter, library.schemaFile()).start(valid, oracleTraces, threads);
 
         // The engine runs while the oracle does.
-        Map<ScenarioLoader.Loaded, Future<SceneResult>> engine = new LinkedHashMap<>();
-        ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
-            Thread t = new Thread(r, "engine");
-            t.setDaemon(true);
-            return t;
-        });
-        try {
-            for (ScenarioLoader.Loaded l : loaded) {
-                if (l.ok()) {
-                    engine.put(l, pool.submit(() -> runEngine(l.scenario(), engineTraces)));
-                }
-            }
+        try (SceneBatch engine = new SceneBatch(loaded, threads,
+                new SceneBatch.Settings(engineTraces, true, true, Limits.SCENE_SECONDS, n -> { }))) {
             Map<Path, OracleScene> oracle = oracleRun == null ? Map.of() : oracleRun.await();
             List<Comparison.Scene> scenes = new ArrayList<>();
             int width = 10;
@@ -122,14 +98,15 @@ final class CompareCommand implements Callable<Integer> {
             for (ScenarioLoader.Loaded l : loaded) {
                 Comparison.Scene c;
                 if (!l.ok()) {
-                    c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, "ERROR",
-                            "invalid scene: " + l.problems(), "ERROR", null, OracleSettings.DEFAULT, null, List.of());
+                    c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, CompareStatus.ERROR,
+                            "invalid scene: " + l.problems(), Status.ERROR.label(), null, OracleSettings.DEFAULT, null,
+                            List.of());
                 } else {
-                    SceneResult r = get(engine.get(l));
+                    SceneResult r = engine.result(l);
                     OracleScene o = oracle.get(l.file().toAbsolutePath().normalize());
                     Trace oracleTrace = o != null && o.ok() ? TraceReader.read(Path.of(o.trace())).trace() : null;
                     c = Comparison.compare(l.scenario(), r.status().label() + (r.message().isEmpty() ? "" : ": "
-                            + r.message()), r.trace(), o, oracleTrace, closedForm(l.scenario()));
+                            + r.message()), r.trace(), o, oracleTrace, ClosedForms.of(l.scenario()));
                 }
                 scenes.add(c);
                 System.out.println(line(c, width));
@@ -140,43 +117,6 @@ final class CompareCommand implements Callable<Integer> {
             CompareReport.write(reports, scenes, summary, command, pymunkVersion(oracleHome));
             System.out.println("report: " + reports.resolve("summary.md") + ", " + reports.resolve("compare.json"));
             return summary.failed() ? 1 : 0;
-        } finally {
-            pool.shutdownNow();
-        }
-    }
-
-    private static SceneResult runEngine(Scenario s, Path traces) {
-        SceneResult r = ScenarioRunner.run(s, n -> { });
-        if (r.trace() != null) {
-            try {
-                TraceWriter.write(TraceWriter.fileFor(traces, r.scene()), r.scene(), "emini", r.trace());
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-        }
-        return r;
-    }
-
-    /**
-     * The scene's closed-form model, built on a world without the elements the engine may lack (only
-     * the pendulum model reads the world, for the bob's inertia).
-     */
-    static ClosedForm closedForm(Scenario s) {
-        if (s.closedForm() == null) {
-            return null;
-        }
-        Scenario bodiesOnly = new Scenario(s.name(), s.file(), s.description(), s.category(), s.world(), s.shapes(),
-                s.bodies(), s.actions(), Map.of(), s.run(), s.closedForm(), s.oracle(), s.knownFailure());
-        BuiltWorld built;
-        try {
-            built = WorldBuilder.build(bodiesOnly);
-        } catch (Exception e) {
-            built = null;
-        }
-        try {
-            return ClosedForms.create(bodiesOnly, built);
-        } catch (RuntimeException e) {
-            return null;
         }
     }
 
@@ -194,29 +134,11 @@ final class CompareCommand implements Callable<Integer> {
     }
 
     private static String line(Comparison.Scene c, int width) {
-        int agree = 0, differ = 0, engine = 0, oracle = 0, tie = 0;
-        for (Comparison.Row r : c.rows()) {
-            agree += r.agreement().equals("agree") ? 1 : 0;
-            differ += r.agreement().equals("differ") ? 1 : 0;
-            engine += r.closer().equals("engine") ? 1 : 0;
-            oracle += r.closer().equals("oracle") ? 1 : 0;
-            tie += r.closer().equals("tie") ? 1 : 0;
-        }
+        CompareReport.Summary n = CompareReport.Summary.of(List.of(c), 0);
         String counts = String.format(Locale.ROOT, "%3d rows: %2d agree %2d differ; closer: engine %d, pymunk %d, tie %d",
-                c.rows().size(), agree, differ, engine, oracle, tie);
-        String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", c.status(), c.scene(), counts);
+                c.rows().size(), n.agree(), n.differ(), n.engineCloser(), n.oracleCloser(), n.ties());
+        String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", c.status().label(), c.scene(), counts);
         return c.note().isEmpty() ? line : line + "  [" + c.note() + "]";
-    }
-
-    private static SceneResult get(Future<SceneResult> f) throws IOException, InterruptedException {
-        try {
-            return f.get();
-        } catch (ExecutionException e) {
-            if (e.getCause() instanceof UncheckedIOException io) {
-                throw io.getCause();
-            }
-            throw new IllegalStateException(e.getCause());
-        }
     }
 
     /**

@@ -1,32 +1,20 @@
 package org.emini.harness.cli;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.function.LongConsumer;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
-import org.emini.harness.load.Problem;
-import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.report.ConsoleTable;
 import org.emini.harness.report.JUnitXmlWriter;
 import org.emini.harness.report.ResultsWriter;
 import org.emini.harness.report.Summary;
-import org.emini.harness.report.TraceWriter;
 import org.emini.harness.run.SceneResult;
-import org.emini.harness.run.ScenarioRunner;
-import org.emini.harness.run.Status;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -77,14 +65,10 @@ final class RunCommand implements Callable<Integer> {
         Options.require(spec, sceneTimeout > 0, "--scene-timeout must be > 0, was " + sceneTimeout);
         // Made first, so that reports under a file fail now, not after the run.
         Files.createDirectories(reports);
-        ScenarioLoader loader = library.loader();
-        List<Path> files = library.files(spec, paths);
-        List<ScenarioLoader.Loaded> loaded = new ArrayList<>();
+        List<ScenarioLoader.Loaded> loaded = SceneBatch.load(library.loader(), library.files(spec, paths));
         long totalTicks = 0;
         int width = 10;
-        for (Path f : files) {
-            ScenarioLoader.Loaded l = loader.load(f);
-            loaded.add(l);
+        for (ScenarioLoader.Loaded l : loaded) {
             if (l.ok()) {
                 totalTicks += l.scenario().ticks();
                 width = Math.max(width, l.scenario().name().length());
@@ -94,25 +78,15 @@ final class RunCommand implements Callable<Integer> {
         boolean bar = progress != null ? progress : System.console() != null;
         int threads = jobs != null ? jobs : Runtime.getRuntime().availableProcessors();
         List<SceneResult> results = new ArrayList<>();
-        ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
-            Thread t = new Thread(r, "scene");
-            t.setDaemon(true);
-            return t;
-        });
         try (ProgressBar pb = bar ? new ProgressBarBuilder().setTaskName("ticks").setInitialMax(totalTicks)
-                .setConsumer(new ConsoleProgressBarConsumer(System.err)).setUpdateIntervalMillis(250).build() : null) {
-            LongConsumer ticks = pb == null ? n -> { } : pb::stepBy;
-            List<Future<SceneResult>> futures = new ArrayList<>();
+                .setConsumer(new ConsoleProgressBarConsumer(System.err)).setUpdateIntervalMillis(250).build() : null;
+             SceneBatch batch = new SceneBatch(loaded, threads, new SceneBatch.Settings(traces, false, false,
+                     sceneTimeout, pb == null ? n -> { } : pb::stepBy))) {
             for (ScenarioLoader.Loaded l : loaded) {
-                futures.add(pool.submit(() -> finish(l, ticks, traces, sceneTimeout)));
-            }
-            for (Future<SceneResult> f : futures) {
-                SceneResult r = get(f);
+                SceneResult r = batch.result(l);
                 results.add(r);
                 System.out.println((bar ? "\r\033[K" : "") + ConsoleTable.line(r, width));
             }
-        } finally {
-            pool.shutdownNow();
         }
         Summary summary = Summary.of(results, (System.nanoTime() - start) / 1e9);
         System.out.println(summary);
@@ -125,37 +99,5 @@ final class RunCommand implements Callable<Integer> {
         text.append(summary).append('\n');
         Files.writeString(reports.resolve("summary.txt"), text, StandardCharsets.UTF_8);
         return summary.failed() ? 1 : 0;
-    }
-
-    /** Runs one loaded scene (or reports why it cannot), writes its trace and drops it from memory. */
-    private static SceneResult finish(ScenarioLoader.Loaded l, LongConsumer ticks, Path traces, double timeout) {
-        if (!l.ok()) {
-            StringBuilder msg = new StringBuilder("invalid scene:");
-            for (Problem p : l.problems()) {
-                msg.append("\n    ").append(p);
-            }
-            return new SceneResult(l.file().toString(), l.file().toString(), null, Status.ERROR, msg.toString(),
-                    List.of(), List.of(), null, 0, 0, 0, 0, 0, null);
-        }
-        SceneResult r = ScenarioRunner.run(l.scenario(), ticks, timeout);
-        if (traces != null && r.trace() != null && l.scenario().run().record().trace()) {
-            try {
-                TraceWriter.write(TraceWriter.fileFor(traces, r.scene()), r.scene(), "emini", r.trace());
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-        }
-        return r.withoutTrace();
-    }
-
-    private static SceneResult get(Future<SceneResult> f) throws IOException, InterruptedException {
-        try {
-            return f.get();
-        } catch (ExecutionException e) {
-            if (e.getCause() instanceof UncheckedIOException io) {
-                throw io.getCause();
-            }
-            throw new IllegalStateException(e.getCause());
-        }
     }
 }

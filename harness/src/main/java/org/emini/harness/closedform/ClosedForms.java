@@ -1,7 +1,9 @@
 package org.emini.harness.closedform;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.util.Map;
 import org.emini.harness.build.BuiltWorld;
+import org.emini.harness.build.WorldBuilder;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.WorldSpec;
@@ -12,15 +14,33 @@ public final class ClosedForms {
     }
 
     /**
-     * The model, or null when the scene has none.
+     * The model of the scene's {@code reference.closedForm}, or null when it has none or the model
+     * cannot be made (the engine refuses the bodies, so the pendulum lacks its bob's inertia).
      *
-     * @param scenario the scene
-     * @param built its world (for inertias the engine computes)
+     * <p>Made on a world of the scene's bodies alone: a model reads the bodies, the gravity and its own
+     * parameters (the pendulum also the engine's inertia of its bob), never the other elements. So a
+     * scene with an element the engine lacks keeps its truth, and the oracle's run of it is judged
+     * against the model, in every command alike.
      */
-    public static ClosedForm create(Scenario scenario, BuiltWorld built) {
+    public static ClosedForm of(Scenario scenario) {
         if (scenario.closedForm() == null) {
             return null;
         }
+        Scenario bodiesOnly = scenario.withElements(Map.of());
+        BuiltWorld built;
+        try {
+            built = WorldBuilder.build(bodiesOnly);
+        } catch (Exception e) {
+            built = null;
+        }
+        try {
+            return create(bodiesOnly, built);
+        } catch (RuntimeException e) {
+            return null;
+        }
+    }
+
+    private static ClosedForm create(Scenario scenario, BuiltWorld built) {
         JsonNode c = scenario.closedForm().node();
         WorldSpec w = scenario.world();
         double g = Math.hypot(w.gravityX(), w.gravityY());

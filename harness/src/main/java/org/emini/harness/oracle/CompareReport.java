@@ -37,21 +37,22 @@ public final class CompareReport {
      * @param ties rows where both are as close
      * @param seconds wall time
      */
-    public record Summary(int scenes, Map<String, Integer> byStatus, int agree, int differ, int engineCloser,
+    public record Summary(int scenes, Map<CompareStatus, Integer> byStatus, int agree, int differ, int engineCloser,
                           int oracleCloser, int ties, double seconds) {
 
         /** Counts the rows of the scenes. */
         public static Summary of(List<Comparison.Scene> scenes, double seconds) {
-            Map<String, Integer> status = new LinkedHashMap<>();
+            // In order of first appearance, as the summary line and compare.json print them.
+            Map<CompareStatus, Integer> status = new LinkedHashMap<>();
             int agree = 0, differ = 0, engine = 0, oracle = 0, ties = 0;
             for (Comparison.Scene s : scenes) {
                 status.merge(s.status(), 1, Integer::sum);
                 for (Comparison.Row r : s.rows()) {
-                    agree += r.agreement().equals("agree") ? 1 : 0;
-                    differ += r.agreement().equals("differ") ? 1 : 0;
-                    engine += r.closer().equals("engine") ? 1 : 0;
-                    oracle += r.closer().equals("oracle") ? 1 : 0;
-                    ties += r.closer().equals("tie") ? 1 : 0;
+                    agree += r.agreement() == Agreement.AGREE ? 1 : 0;
+                    differ += r.agreement() == Agreement.DIFFER ? 1 : 0;
+                    engine += r.closer() == Closer.ENGINE ? 1 : 0;
+                    oracle += r.closer() == Closer.ORACLE ? 1 : 0;
+                    ties += r.closer() == Closer.TIE ? 1 : 0;
                 }
             }
             return new Summary(scenes.size(), status, agree, differ, engine, oracle, ties, seconds);
@@ -59,7 +60,7 @@ public final class CompareReport {
 
         /** Whether a scene could not be compared because of an error (an oracle bug, misaligned traces). */
         public boolean failed() {
-            return byStatus.getOrDefault("ERROR", 0) > 0;
+            return byStatus.getOrDefault(CompareStatus.ERROR, 0) > 0;
         }
 
         @Override
@@ -67,8 +68,8 @@ public final class CompareReport {
             StringBuilder b = new StringBuilder();
             b.append(scenes).append(" scenes:");
             String sep = " ";
-            for (Map.Entry<String, Integer> e : byStatus.entrySet()) {
-                b.append(sep).append(e.getValue()).append(' ').append(e.getKey());
+            for (Map.Entry<CompareStatus, Integer> e : byStatus.entrySet()) {
+                b.append(sep).append(e.getValue()).append(' ').append(e.getKey().label());
                 sep = ", ";
             }
             b.append(String.format(Locale.ROOT, "; rows: %d agree, %d differ; closer to the truth: engine %d, pymunk %d,"
@@ -99,8 +100,8 @@ public final class CompareReport {
             json.name("summary").beginObject();
             json.name("scenes").value(summary.scenes());
             json.name("status").beginObject();
-            for (Map.Entry<String, Integer> e : summary.byStatus().entrySet()) {
-                json.name(e.getKey()).value(e.getValue());
+            for (Map.Entry<CompareStatus, Integer> e : summary.byStatus().entrySet()) {
+                json.name(e.getKey().label()).value(e.getValue());
             }
             json.endObject();
             json.name("agree").value(summary.agree());
@@ -118,7 +119,7 @@ public final class CompareReport {
                 json.name("scene").value(s.scene());
                 json.name("file").value(s.file());
                 json.name("category").value(s.category());
-                json.name("status").value(s.status());
+                json.name("status").value(s.status().label());
                 json.name("note").value(s.note());
                 json.name("engine").value(s.engineStatus());
                 json.name("oracle").beginObject();
@@ -145,8 +146,8 @@ public final class CompareReport {
                     number(json.name("tolerance"), r.tolerance());
                     number(json.name("engineError"), r.engineError());
                     number(json.name("oracleError"), r.oracleError());
-                    json.name("agreement").value(r.agreement());
-                    json.name("closer").value(r.closer());
+                    json.name("agreement").value(r.agreement().label());
+                    json.name("closer").value(r.closer().label());
                     json.endObject();
                 }
                 json.endArray();
@@ -192,9 +193,9 @@ public final class CompareReport {
         Map<String, int[]> tally = new TreeMap<>();
         for (Comparison.Scene s : scenes) {
             for (Comparison.Row r : s.rows()) {
-                if (r.referenceSource() != null && !r.closer().equals("-")) {
+                if (r.referenceSource() != null && r.closer() != Closer.NONE) {
                     int[] t = tally.computeIfAbsent(r.referenceSource(), k -> new int[3]);
-                    t[r.closer().equals("engine") ? 0 : r.closer().equals("oracle") ? 1 : 2]++;
+                    t[r.closer() == Closer.ENGINE ? 0 : r.closer() == Closer.ORACLE ? 1 : 2]++;
                 }
             }
         }
@@ -213,7 +214,7 @@ public final class CompareReport {
                     continue;
                 }
                 closer.add(new String[] {s.scene(), r.channel(), r.figure(), r.referenceSource(), fmt(r.engineError()),
-                        fmt(r.oracleError()), r.closer().equals("oracle") ? "pymunk" : r.closer()});
+                        fmt(r.oracleError()), shown(r.closer())});
             }
         }
         for (String[] c : closer) {
@@ -222,7 +223,7 @@ public final class CompareReport {
         md.append("\n## Scenes\n");
         for (Comparison.Scene s : scenes) {
             md.append("\n### ").append(s.scene()).append("\n\n");
-            md.append("Status: **").append(s.status()).append("** (engine: ").append(s.engineStatus()).append(", pymunk: ")
+            md.append("Status: **").append(s.status().label()).append("** (engine: ").append(s.engineStatus()).append(", pymunk: ")
                     .append(s.oracle() == null ? "not run" : s.oracle().status()).append(")");
             if (s.settings().chaotic()) {
                 md.append("; chaotic: aggregates only");
@@ -242,11 +243,16 @@ public final class CompareReport {
                 md.append("| ").append(r.channel()).append(" | ").append(r.figure()).append(" | ").append(fmt(r.engine()))
                         .append(" | ").append(fmt(r.oracle())).append(" | ").append(ref).append(" | ")
                         .append(fmt(r.difference())).append(" | ").append(fmt(r.tolerance())).append(" | ")
-                        .append(r.agreement()).append(" | ").append(r.closer().equals("oracle") ? "pymunk" : r.closer())
+                        .append(r.agreement().label()).append(" | ").append(shown(r.closer()))
                         .append(" |\n");
             }
         }
         return md.toString();
+    }
+
+    /** The closer side as summary.md names it: the oracle by its name. */
+    private static String shown(Closer c) {
+        return c == Closer.ORACLE ? "pymunk" : c.label();
     }
 
     /** Four significant digits, no exponent for ordinary magnitudes; "-" for a missing figure. */

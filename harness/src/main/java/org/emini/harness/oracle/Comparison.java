@@ -60,12 +60,12 @@ public final class Comparison {
      * @param tolerance the largest difference that still agrees
      * @param engineError |engine − reference| (series: reduced as the figure says), NaN without reference
      * @param oracleError the same for the oracle
-     * @param agreement {@code agree}, {@code differ}, {@code n/a} (not judged by agreement) or {@code -}
-     * @param closer {@code engine}, {@code oracle}, {@code tie}, or {@code -} (no reference or a side missing)
+     * @param agreement whether the engine and the oracle agree
+     * @param closer which is closer to the truth
      */
     public record Row(String channel, String figure, double engine, double oracle, double reference,
                       String referenceSource, double difference, double tolerance, double engineError,
-                      double oracleError, String agreement, String closer) {
+                      double oracleError, Agreement agreement, Closer closer) {
     }
 
     /**
@@ -74,8 +74,7 @@ public final class Comparison {
      * @param scene the scene id
      * @param file the scene file
      * @param category the scene's category, or null
-     * @param status {@code compared}, {@code oracle only} (the engine cannot run it), {@code engine only}
-     *     (the oracle cannot), {@code neither} or {@code ERROR}
+     * @param status how far it could be compared
      * @param note what the reader should know (why a side is missing, what pymunk leaves out)
      * @param engineStatus the engine run's status (pass, known, FAIL, unsupported, ERROR)
      * @param oracle what the oracle said
@@ -83,7 +82,7 @@ public final class Comparison {
      * @param closedForm the closed-form model's name, or null
      * @param rows the table
      */
-    public record Scene(String scene, String file, String category, String status, String note,
+    public record Scene(String scene, String file, String category, CompareStatus status, String note,
                         String engineStatus, OracleScene oracle, OracleSettings settings, String closedForm,
                         List<Row> rows) {
     }
@@ -113,7 +112,7 @@ public final class Comparison {
         if (engine != null && oracleTrace != null) {
             String mismatch = mismatch(engine, oracleTrace);
             if (mismatch != null) {
-                return new Scene(s.name(), s.file(), s.category(), "ERROR", "the traces do not line up: " + mismatch,
+                return new Scene(s.name(), s.file(), s.category(), CompareStatus.ERROR, "the traces do not line up: " + mismatch,
                         engineStatus, oracle, settings, model, List.of());
             }
         }
@@ -177,10 +176,11 @@ public final class Comparison {
                 }
             }
         }
-        String status = engine != null && oracleTrace != null ? "compared"
-                : oracleTrace != null ? "oracle only" : engine != null ? "engine only" : "neither";
+        CompareStatus status = engine != null && oracleTrace != null ? CompareStatus.COMPARED
+                : oracleTrace != null ? CompareStatus.ORACLE_ONLY : engine != null ? CompareStatus.ENGINE_ONLY
+                : CompareStatus.NEITHER;
         if (oracle != null && (oracle.status().equals("error") || oracle.status().equals("invalid"))) {
-            status = "ERROR";
+            status = CompareStatus.ERROR;
         }
         return new Scene(s.name(), s.file(), s.category(), status, String.join("; ", notes), engineStatus, oracle,
                 settings, model, rows);
@@ -326,34 +326,34 @@ public final class Comparison {
     private static Row row(String channel, String figure, double engine, double oracle, double ref, String source,
                            double difference, double tol, double errE, double errO, double scale, boolean both,
                            OracleSettings settings, boolean incomplete) {
-        String agreement;
+        Agreement agreement;
         if (!both) {
-            agreement = "-";
+            agreement = Agreement.NONE;
         } else if (incomplete || (settings.continuousCollision() && source != null)) {
-            agreement = "n/a";
+            agreement = Agreement.NOT_JUDGED;
         } else {
-            agreement = Math.abs(difference) <= tol ? "agree" : "differ";  // NaN differs
+            agreement = Math.abs(difference) <= tol ? Agreement.AGREE : Agreement.DIFFER;  // NaN differs
         }
-        String closer = "-";
+        Closer closer = Closer.NONE;
         if (source != null && both && !incomplete) {
             closer = closer(errE, errO, scale);
         }
         return new Row(channel, figure, engine, oracle, ref, source, difference, tol, errE, errO, agreement, closer);
     }
 
-    /** Which of two errors is smaller, or {@code tie} when they are within float noise or 5% of each other. */
-    static String closer(double errE, double errO, double scale) {
+    /** Which of two errors is smaller, or a tie when they are within float noise or 5% of each other. */
+    static Closer closer(double errE, double errO, double scale) {
         double e = Double.isNaN(errE) ? Double.POSITIVE_INFINITY : errE;
         double o = Double.isNaN(errO) ? Double.POSITIVE_INFINITY : errO;
         if (e == o) {
-            return "tie";
+            return Closer.TIE;
         }
         double noise = 1e-6 * (Double.isFinite(scale) ? scale : 0) + 1e-9;
         if (Double.isFinite(e) && Double.isFinite(o)
                 && (Math.max(e, o) <= noise || Math.abs(e - o) <= Math.max(noise, TIE * Math.max(e, o)))) {
-            return "tie";
+            return Closer.TIE;
         }
-        return e < o ? "engine" : "oracle";
+        return e < o ? Closer.ENGINE : Closer.ORACLE;
     }
 
     /**

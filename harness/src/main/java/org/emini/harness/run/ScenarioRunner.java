@@ -110,7 +110,7 @@ public final class ScenarioRunner {
         }
         progress.accept(ticks - done);
         double runMillis = millis(System.nanoTime() - t1);
-        ClosedForm closedForm = ClosedForms.create(scenario, built);
+        ClosedForm closedForm = ClosedForms.of(scenario);
         List<Verdict> verdicts = new ArrayList<>();
         for (ExpectationSpec e : scenario.run().expect()) {
             verdicts.add(Evaluator.evaluate(e, trace, closedForm));

@@ -36,6 +36,12 @@ public record Scenario(String name, String file, String description, String cate
         return null;
     }
 
+    /** The same scene with other elements (none: its bodies alone). */
+    public Scenario withElements(Map<String, Section> newElements) {
+        return new Scenario(name, file, description, category, world, shapes, bodies, actions, newElements, run,
+                closedForm, oracle, knownFailure);
+    }
+
     /** Number of ticks the run takes. */
     public long ticks() {
         return (long) Math.ceil(run.duration() / world.timestep() - 1e-9);

@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
-import org.emini.harness.build.WorldBuilder;
 import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.closedform.ClosedForms;
 import org.emini.harness.load.ScenarioLoader;
@@ -163,16 +162,8 @@ public final class Sweep {
 
     private synchronized ClosedForm closedForm(SceneFile f) {
         if (!closedForms.containsKey(f.id())) {
-            Scenario s = scenario(f);
-            ClosedForm cf = null;
-            if (s.closedForm() != null) {
-                try {
-                    cf = ClosedForms.create(s, WorldBuilder.build(s));
-                } catch (Exception e) {
-                    cf = null; // the engine cannot build the scene: fall back to self-consistency
-                }
-            }
-            closedForms.put(f.id(), cf);
+            // Null without a model: the points fall back to self-consistency.
+            closedForms.put(f.id(), ClosedForms.of(scenario(f)));
         }
         return closedForms.get(f.id());
     }

@@ -3,8 +3,6 @@ package org.emini.harness.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import java.nio.file.Files;
@@ -32,16 +30,6 @@ class RunCommandTest {
                 "--no-progress", scenes.toString());
     }
 
-    /** The library's schema with an emitter key no builder reads. */
-    private static Path aheadSchema(Path dir) throws Exception {
-        ObjectMapper json = new ObjectMapper();
-        ObjectNode schema = (ObjectNode) json.readTree(Repo.schema().toFile());
-        ((ObjectNode) schema.path("$defs").path("emitter").path("properties")).putObject("burst").put("type", "integer");
-        Path file = Files.createDirectories(dir.resolve("schema")).resolve("scenario.schema.json");
-        json.writeValue(file.toFile(), schema);
-        return file;
-    }
-
     private static JsonObject results(Path reports) throws Exception {
         return JsonParser.parseString(Files.readString(reports.resolve("results.json"))).getAsJsonObject();
     }
@@ -58,7 +46,7 @@ class RunCommandTest {
                 "bodies: [{name: a, shape: {type: circle, radius: 5}}]",
                 "particles: [{from: [0, 0], burst: 5}]", "run: {duration: 1}", ""));
         Path reports = dir.resolve("reports");
-        assertEquals(0, run(scenes, reports, aheadSchema(dir)));
+        assertEquals(0, run(scenes, reports, Repo.schemaAhead(dir)));
         JsonObject summary = results(reports).getAsJsonObject("summary");
         assertEquals(1, summary.get("pass").getAsInt());
         assertEquals(1, summary.get("knownFailure").getAsInt());

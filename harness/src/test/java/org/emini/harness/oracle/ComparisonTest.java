@@ -55,19 +55,47 @@ class ComparisonTest {
         Trace oracle = trace(t -> 10 * t, Map.of("momentum.x", t -> 10, "momentum.y", t -> 0,
                 "penetration.max", t -> 0.5, "penetration.mean", t -> 0.2, "penetration.points", t -> 2));
         Comparison.Scene c = Comparison.compare(s, "pass", engine, OK, oracle, null);
-        assertEquals("compared", c.status());
+        assertEquals(CompareStatus.COMPARED, c.status());
         Comparison.Row momentum = row(c, "momentum.x");
         assertEquals("maxDrift", momentum.figure());
         assertEquals(0.5, momentum.engine(), 1e-12);
         assertEquals(0, momentum.oracle(), 1e-12);
         assertEquals("law: an isolated system keeps its momentum", momentum.referenceSource());
-        assertEquals("oracle", momentum.closer());
+        assertEquals(Closer.ORACLE, momentum.closer());
         // Default tolerance max(0.01, 2% of 10.5) = 0.21 < 0.5: the drifts differ.
-        assertEquals("differ", momentum.agreement());
+        assertEquals(Agreement.DIFFER, momentum.agreement());
         Comparison.Row pen = row(c, "penetration.max");
-        assertEquals("engine", pen.closer());
-        assertEquals("differ", pen.agreement());  // 0.45 > 0.25 px
-        assertEquals("agree", row(c, "penetration.mean").agreement());  // 0.02 against 0.2: within 0.25 px
+        assertEquals(Closer.ENGINE, pen.closer());
+        assertEquals(Agreement.DIFFER, pen.agreement());  // 0.45 > 0.25 px
+        assertEquals(Agreement.AGREE, row(c, "penetration.mean").agreement());  // 0.02 against 0.2: within 0.25 px
+    }
+
+    @Test
+    void reportsWriteTheVerdictsInTheWordsTheDashboardReads(@TempDir Path dir) throws Exception {
+        Scenario s = Scenes.valid("iso.yaml", ISOLATED);
+        Trace engine = trace(t -> 10 * t, Map.of("momentum.x", t -> 10 + 0.5 * t, "momentum.y", t -> 0));
+        Trace oracle = trace(t -> 10 * t, Map.of("momentum.x", t -> 10, "momentum.y", t -> 0));
+        List<Comparison.Scene> scenes = List.of(Comparison.compare(s, "pass", engine, OK, oracle, null),
+                Comparison.compare(s, "unsupported: joints", null, OK, oracle, null));
+        CompareReport.write(dir, scenes, CompareReport.Summary.of(scenes, 1), "test", "pymunk");
+        com.google.gson.JsonObject json = com.google.gson.JsonParser.parseString(
+                Files.readString(dir.resolve("compare.json"))).getAsJsonObject();
+        assertEquals("{\"compared\":1,\"oracle only\":1}",
+                json.getAsJsonObject("summary").getAsJsonObject("status").toString());
+        com.google.gson.JsonArray out = json.getAsJsonArray("scenes");
+        assertEquals("oracle only", out.get(1).getAsJsonObject().get("status").getAsString());
+        java.util.Set<String> agreements = new java.util.TreeSet<>();
+        java.util.Set<String> closers = new java.util.TreeSet<>();
+        for (com.google.gson.JsonElement scene : out) {
+            for (com.google.gson.JsonElement r : scene.getAsJsonObject().getAsJsonArray("rows")) {
+                agreements.add(r.getAsJsonObject().get("agreement").getAsString());
+                closers.add(r.getAsJsonObject().get("closer").getAsString());
+            }
+        }
+        assertEquals(java.util.Set.of("-", "agree", "differ"), agreements);
+        assertEquals(java.util.Set.of("-", "oracle", "tie"), closers);
+        assertTrue(Files.readString(dir.resolve("summary.md")).contains("| momentum.x | maxDrift | 0.5 | 0 | 0 (law: "
+                + "an isolated system keeps its momentum) | 0.5 | 0.21 | differ | pymunk |"));
     }
 
     @Test
@@ -79,13 +107,13 @@ class ComparisonTest {
         Comparison.Row x = row(Comparison.compare(calm, "pass", engine, OK, oracle, null), "body.ball.x");
         assertEquals("series", x.figure());
         assertEquals(3, x.difference(), 1e-9);  // the largest |engine − oracle|, at t = 1
-        assertEquals("differ", x.agreement());  // 1 px by default
+        assertEquals(Agreement.DIFFER, x.agreement());  // 1 px by default
         Scenario chaotic = Scenes.valid("chaos.yaml", ISOLATED.replace("metrics: [linearMomentum, penetration]",
                 "metrics: []") + "\nreference: {oracle: {chaotic: true, tolerances: {\"body.*.x\": 5}}}");
         assertTrue(Comparison.compare(chaotic, "pass", engine, OK, oracle, null).rows().isEmpty());
         Scenario tolerant = Scenes.valid("tol.yaml", ISOLATED.replace("metrics: [linearMomentum, penetration]",
                 "metrics: []") + "\nreference: {oracle: {tolerances: {\"body.*.x\": 5}}}");
-        assertEquals("agree", row(Comparison.compare(tolerant, "pass", engine, OK, oracle, null), "body.ball.x").agreement());
+        assertEquals(Agreement.AGREE, row(Comparison.compare(tolerant, "pass", engine, OK, oracle, null), "body.ball.x").agreement());
     }
 
     @Test
@@ -106,17 +134,17 @@ class ComparisonTest {
         assertEquals("series, finalError", x.figure());
         assertEquals(0, x.engineError(), 1e-9);
         assertEquals(0.5, x.oracleError(), 1e-9);
-        assertEquals("engine", x.closer());
+        assertEquals(Closer.ENGINE, x.closer());
         assertEquals(10, x.reference(), 1e-9);
         assertEquals("closed form projectile", x.referenceSource());
     }
 
     @Test
     void closerCallsTiesWithinNoiseOrFivePercent() {
-        assertEquals("tie", Comparison.closer(1e-12, 3e-12, 100));
-        assertEquals("tie", Comparison.closer(1.0, 1.04, 100));
-        assertEquals("engine", Comparison.closer(1.0, 1.2, 100));
-        assertEquals("oracle", Comparison.closer(Double.NaN, 1.0, 100));
+        assertEquals(Closer.TIE, Comparison.closer(1e-12, 3e-12, 100));
+        assertEquals(Closer.TIE, Comparison.closer(1.0, 1.04, 100));
+        assertEquals(Closer.ENGINE, Comparison.closer(1.0, 1.2, 100));
+        assertEquals(Closer.ORACLE, Comparison.closer(Double.NaN, 1.0, 100));
     }
 
     @Test
@@ -131,8 +159,8 @@ class ComparisonTest {
         Trace oracle = trace(t -> 0, Map.of("tunnelling.count", t -> t > 0.15 ? 1 : 0));
         Comparison.Scene c = Comparison.compare(s, "pass", engine, OK, oracle, null);
         Comparison.Row tunnel = row(c, "tunnelling.count");
-        assertEquals("n/a", tunnel.agreement());
-        assertEquals("engine", tunnel.closer());
+        assertEquals(Agreement.NOT_JUDGED, tunnel.agreement());
+        assertEquals(Closer.ENGINE, tunnel.closer());
         assertTrue(c.note().contains("continuous collision"));
     }
 
@@ -142,16 +170,16 @@ class ComparisonTest {
         Map<String, DoubleUnaryOperator> m = Map.of("momentum.x", t -> 10, "momentum.y", t -> 0,
                 "penetration.max", t -> 0, "penetration.mean", t -> 0, "penetration.points", t -> 0);
         Comparison.Scene onlyOracle = Comparison.compare(s, "unsupported: joints", null, OK, trace(t -> t, m), null);
-        assertEquals("oracle only", onlyOracle.status());
+        assertEquals(CompareStatus.ORACLE_ONLY, onlyOracle.status());
         assertFalse(onlyOracle.rows().isEmpty());
         for (Comparison.Row r : onlyOracle.rows()) {
-            assertEquals("-", r.agreement());
-            assertEquals("-", r.closer());
+            assertEquals(Agreement.NONE, r.agreement());
+            assertEquals(Closer.NONE, r.closer());
         }
         Trace shorter = new Trace(0.1, List.of("ball"), List.copyOf(m.keySet()));
         shorter.add(0, new double[6 + m.size()]);
         Comparison.Scene bad = Comparison.compare(s, "pass", trace(t -> t, m), OK, shorter, null);
-        assertEquals("ERROR", bad.status());
+        assertEquals(CompareStatus.ERROR, bad.status());
         assertTrue(bad.note().contains("11 samples against 1"));
     }
 
@@ -164,8 +192,8 @@ class ComparisonTest {
                 "penetration.max", t -> 0, "penetration.mean", t -> 0, "penetration.points", t -> 0);
         Comparison.Scene c = Comparison.compare(s, "pass", trace(t -> t, m), incomplete, trace(t -> t, m), null);
         for (Comparison.Row r : c.rows()) {
-            assertEquals("n/a", r.agreement());
-            assertEquals("-", r.closer());
+            assertEquals(Agreement.NOT_JUDGED, r.agreement());
+            assertEquals(Closer.NONE, r.closer());
         }
         assertTrue(c.note().contains("linear motor (changes the motion)"));
     }

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -52,6 +54,44 @@ class SweepTest {
         assertEquals("self:30/10", tight.reference());
         assertEquals(0, tight.maxError(), 0);
         assertTrue(Files.isRegularFile(dir.resolve("plots").resolve("closed-form_projectile-20hz-error.svg")));
+    }
+
+    @Test
+    void aSceneWithAnElementTheEngineLacksIsStillJudgedAgainstItsClosedForm(@TempDir Path dir) throws Exception {
+        ScenarioLoader ahead = new ScenarioLoader(SchemaCheck.fromFile(Repo.schemaAhead(dir)), Repo.scenarios());
+        String text = Files.readString(Repo.scenarios().resolve("closed-form/pendulum-90deg.yaml"))
+                .replace("reference:", "particles: [{from: [500, 500], burst: 5}]\nreference:");
+        Sweep.SceneFile scene = new Sweep.SceneFile("closed-form/pendulum-90deg", text);
+        EngineBackend engine = new EngineBackend(ahead);
+        // Stands in for pymunk, which leaves the particles out and runs the rest.
+        SweepBackend leavesOutParticles = new SweepBackend() {
+            @Override
+            public String name() {
+                return "stand-in";
+            }
+
+            @Override
+            public String unavailable() {
+                return null;
+            }
+
+            @Override
+            public Measured run(String sceneId, String variantText, int repeats) {
+                try {
+                    ObjectMapper json = new ObjectMapper();
+                    ObjectNode variant = (ObjectNode) json.readTree(variantText);
+                    variant.remove("particles");
+                    return engine.run(sceneId, json.writeValueAsString(variant), repeats);
+                } catch (java.io.IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            }
+        };
+        Sweep sweep = new Sweep(ahead, SweepGrid.of(30, 60, List.of(5)), 1);
+        assertEquals("unsupported", sweep.measure(new Sweep.Task(scene, engine, 30, 5)).status());
+        SweepPoint p = sweep.measure(new Sweep.Task(scene, leavesOutParticles, 30, 5));
+        assertEquals("ok", p.status(), p.message());
+        assertEquals("closedForm:pendulum", p.reference(), "as compare judges it, not self-consistency");
     }
 
     @Test
