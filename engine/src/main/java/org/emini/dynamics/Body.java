@@ -139,7 +139,7 @@ public final class Body {
     public void setShape(Shape shape) {
         Check.notNull("Body.setShape", "shape", shape);
         if (world != null) {
-            world.checkNotSolving("Body.setShape");
+            world.solver.checkNotSolving("Body.setShape");
         }
         this.shape = shape;
         if (world != null) {
@@ -175,12 +175,12 @@ public final class Body {
         Check.finite("Body.setPosition", "x", x);
         Check.finite("Body.setPosition", "y", y);
         if (world != null) {
-            world.checkNotSolving("Body.setPosition");
+            world.solver.checkNotSolving("Body.setPosition");
         }
         this.x = x;
         this.y = y;
         if (world != null) {
-            world.bodyGeometryChanged(this);
+            world.proxies.geometryChanged(this);
         }
     }
 
@@ -229,13 +229,13 @@ public final class Body {
     public void setAngle(float radians) {
         Check.finite("Body.setAngle", "radians", radians);
         if (world != null) {
-            world.checkNotSolving("Body.setAngle");
+            world.solver.checkNotSolving("Body.setAngle");
         }
         angle = radians;
         c = EMath.cos(radians);
         s = EMath.sin(radians);
         if (world != null) {
-            world.bodyGeometryChanged(this);
+            world.proxies.geometryChanged(this);
         }
     }
 
@@ -279,7 +279,7 @@ public final class Body {
             this.vx = vx;
             this.vy = vy;
             if (world != null) {
-                world.bodyVelocitySet(this);
+                world.solver.velocitySet(this);
             }
         }
     }
@@ -303,7 +303,7 @@ public final class Body {
         if (dynamic && rotatable) {
             w = omega;
             if (world != null) {
-                world.bodyVelocitySet(this);
+                world.solver.velocitySet(this);
             }
         }
     }
@@ -442,7 +442,7 @@ public final class Body {
      */
     public void setDynamic(boolean dynamic) {
         if (world != null) {
-            world.checkNotSolving("Body.setDynamic");
+            world.solver.checkNotSolving("Body.setDynamic");
         }
         this.dynamic = dynamic;
         if (!dynamic) {
@@ -451,7 +451,7 @@ public final class Body {
             w = 0f;
         }
         if (world != null) {
-            world.bodyFilterChanged(this);
+            world.proxies.filterChanged(this);
         }
     }
 
@@ -475,8 +475,8 @@ public final class Body {
             w = 0f;
         }
         if (world != null) {
-            world.bodyForcesChanged(this);
-            world.bodyVelocitySet(this);
+            world.solver.forcesChanged(this);
+            world.solver.velocitySet(this);
         }
     }
 
@@ -497,7 +497,7 @@ public final class Body {
     public void setInteracting(boolean interacting) {
         this.interacting = interacting;
         if (world != null) {
-            world.bodyFilterChanged(this);
+            world.proxies.filterChanged(this);
         }
     }
 
@@ -518,7 +518,7 @@ public final class Body {
     public void setGravityAffected(boolean affected) {
         this.gravityAffected = affected;
         if (world != null) {
-            world.bodyForcesChanged(this);
+            world.solver.forcesChanged(this);
         }
     }
 
@@ -578,7 +578,7 @@ public final class Body {
     public void setCollisionLayers(int bits) {
         layers = bits;
         if (world != null) {
-            world.bodyFilterChanged(this);
+            world.proxies.filterChanged(this);
         }
     }
 
@@ -602,7 +602,7 @@ public final class Body {
         forceX += fx;
         forceY += fy;
         if (world != null) {
-            world.bodyForcesChanged(this);
+            world.solver.forcesChanged(this);
         }
     }
 
@@ -632,7 +632,7 @@ public final class Body {
         applyForce(fx, fy);
         torque += moment;
         if (world != null) {
-            world.bodyForcesChanged(this);
+            world.solver.forcesChanged(this);
         }
     }
 
@@ -651,7 +651,7 @@ public final class Body {
             forceX += m * ax;
             forceY += m * ay;
             if (world != null) {
-                world.bodyForcesChanged(this);
+                world.solver.forcesChanged(this);
             }
         }
     }
@@ -666,7 +666,7 @@ public final class Body {
         forcesForThisTick();
         torque += t;
         if (world != null) {
-            world.bodyForcesChanged(this);
+            world.solver.forcesChanged(this);
         }
     }
 
@@ -689,7 +689,7 @@ public final class Body {
             vx += im * jx;
             vy += im * jy;
             if (world != null) {
-                world.bodyImpulseApplied(this, im * jx, im * jy, 0f);
+                world.solver.impulseApplied(this, im * jx, im * jy, 0f);
             }
         }
     }
@@ -714,7 +714,7 @@ public final class Body {
         if (dynamic && rotatable) {
             w += dw;
             if (world != null) {
-                world.bodyImpulseApplied(this, 0f, 0f, dw);
+                world.solver.impulseApplied(this, 0f, 0f, dw);
             }
         }
     }
@@ -730,7 +730,7 @@ public final class Body {
             float dw = shape.getInverseInertia() * impulse;
             w += dw;
             if (world != null) {
-                world.bodyImpulseApplied(this, 0f, 0f, dw);
+                world.solver.impulseApplied(this, 0f, 0f, dw);
             }
         }
     }

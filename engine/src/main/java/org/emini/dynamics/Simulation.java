@@ -5,7 +5,6 @@ import org.emini.collision.QueryCallback;
 import org.emini.internal.ChangeQueue;
 import org.emini.internal.Check;
 import org.emini.internal.ElementList;
-import org.emini.math.EMath;
 
 /**
  * The physics of a world: bodies, constraints, contacts, the landscape, the simulation area, and
@@ -81,23 +80,21 @@ public abstract class Simulation {
     private final BodyTable bodies = new BodyTable();
 
     private final BroadPhase broadPhase;
+    final ProxySync proxies;
     private final ContactManager contacts = new ContactManager(this);
-    private final Solver solver = new Solver(this);
+    final Solver solver = new Solver(this);
     private final ElementList<Constraint> constraints = new ElementList<Constraint>(changes, new Constraint[8], "Constraint",
         "constraint");
-    private final float[] aabb = new float[4];
     private Landscape landscape = new Landscape();
     private final SimulationArea area = new SimulationArea();
     private final BodyQuery bodyQuery = new BodyQuery();
     final StepData stepData = new StepData();
-    // Bodies whose pose or shape the application changed since the last tick.
-    private Body[] dirtyBodies = new Body[16];
-    private int dirtyCount;
     private long tickCount;
 
     /** Creates an empty world with the original engine's defaults. */
     protected Simulation() {
         broadPhase = new BroadPhase(settings.getAabbMargin());
+        proxies = new ProxySync(this, broadPhase, contacts);
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -284,10 +281,7 @@ public abstract class Simulation {
         body.forceTick = tickCount;
         body.awake = false;
         body.solverIndex = 0;
-        body.proxyDirty = false;
-        ContactManager.forgetLandscape(body);
-        body.getShape().computeAabb(body.x, body.y, body.c, body.s, aabb);
-        body.proxyId = broadPhase.createProxy(aabb[0], aabb[1], aabb[2], aabb[3], body.slot, !body.isDynamic());
+        proxies.create(body);
     }
 
     /**
@@ -311,13 +305,11 @@ public abstract class Simulation {
         contacts.destroyContactsOf(body);
         removeConstraintsOf(body);
         bodyRemoved(body);
-        broadPhase.destroyProxy(body.proxyId);
+        proxies.destroy(body);
         bodies.remove(body);
         body.world = null;
-        body.proxyId = -1;
         body.awake = false;
         body.solverIndex = 0;
-        body.proxyDirty = false;
         return true;
     }
 
@@ -362,66 +354,14 @@ public abstract class Simulation {
         return broadPhase.getUserData(proxyId);
     }
 
-    void bodyGeometryChanged(Body b) {
-        if (!b.proxyDirty) {
-            b.proxyDirty = true;
-            if (dirtyCount == dirtyBodies.length) {
-                Body[] grown = new Body[2 * dirtyCount];
-                System.arraycopy(dirtyBodies, 0, grown, 0, dirtyCount);
-                dirtyBodies = grown;
-            }
-            dirtyBodies[dirtyCount++] = b;
-        }
-    }
-
-    /** Refuses a change of a body's pose, shape or kind while the solver holds a copy of it. */
-    void checkNotSolving(String where) {
-        if (solver.isSolving()) {
-            throw new IllegalStateException(where + ": cannot change a body's pose, shape or kind while the world solves"
-                + " a tick (from a Constraint); change it before tick(), or from an ExternalForce or an event listener");
-        }
-    }
-
-    // While the solver holds a copy of a body (from a Constraint), what the application changes of
-    // its velocity and forces reaches the copy; velocities otherwise read from the body are stale.
-
-    void bodyVelocitySet(Body b) {
-        if (solver.isSolving() && b.solverIndex != 0) {
-            solver.bodies.setVelocity(b, b.vx, b.vy, b.w);
-        }
-    }
-
-    void bodyImpulseApplied(Body b, float dvx, float dvy, float dw) {
-        if (solver.isSolving() && b.solverIndex != 0) {
-            solver.bodies.addVelocity(b, dvx, dvy, dw);
-        }
-    }
-
-    void bodyForcesChanged(Body b) {
-        if (solver.isSolving() && b.solverIndex != 0) {
-            solver.bodies.refreshForces(b, gravityX, gravityY, tickCount);
-        }
-    }
-
+    /** A new shape: during a tick its contacts still name the old shape's parts, so they end when it ends. */
     void bodyShapeChanged(Body b) {
         if (changes.isOpen()) {
-            // The tick's contacts still name the old shape's parts: drop them when it ends.
             changes.add(shapeChange, b, true);
-            bodyGeometryChanged(b);
-            return;
+            proxies.geometryChanged(b);
+        } else {
+            proxies.shapeChanged(b);
         }
-        // Contacts name the shape's parts: start afresh.
-        contacts.destroyContactsOf(b);
-        bodyGeometryChanged(b);
-        broadPhase.touchProxy(b.proxyId);
-        ContactManager.forgetLandscape(b);
-    }
-
-    void bodyFilterChanged(Body b) {
-        contacts.markFilterDirty(b);
-        broadPhase.setStatic(b.proxyId, !b.isDynamic());
-        broadPhase.touchProxy(b.proxyId);
-        ContactManager.forgetLandscape(b);
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -572,7 +512,7 @@ public abstract class Simulation {
         Check.notNull("World.queryBodies", "callback", callback);
         // Results come in world order, by index.
         bodies.closeHoles();
-        bodyQuery.run(this, broadPhase, area, dirtyBodies, dirtyCount, minX, minY, maxX, maxY, callback);
+        bodyQuery.run(this, broadPhase, area, proxies.dirty, proxies.dirtyCount, minX, minY, maxX, maxY, callback);
     }
 
     private static void checkRectangle(String where, String what, float minX, float minY, float maxX, float maxY) {
@@ -632,10 +572,10 @@ public abstract class Simulation {
 
     private void collisionFilterChanged(Body a, Body b) {
         if (a.world == this) {
-            bodyFilterChanged(a);
+            proxies.filterChanged(a);
         }
         if (b.world == this) {
-            bodyFilterChanged(b);
+            proxies.filterChanged(b);
         }
     }
 
@@ -815,7 +755,11 @@ public abstract class Simulation {
         area.collect(this, broadPhase, bodies.ordered(), bodies.count());
         stepData.recordStart(area.bodies, area.count);
         contacts.beginLandscape(landscape);
-        updateBroadPhase(dt);
+        Body overflow = proxies.update(area.bodies, area.count, settings.getAabbMargin(), dt);
+        if (overflow != null) {
+            throw leftFiniteRange(overflow, "position (" + overflow.x + ", " + overflow.y + "), velocity (" + overflow.vx
+                + ", " + overflow.vy + ") px/s over a " + dt + " s timestep");
+        }
         contacts.updatePairs(broadPhase);
         if (area.isBounded()) {
             contacts.gather(area.bodies, area.count, tickCount);
@@ -835,38 +779,5 @@ public abstract class Simulation {
     private IllegalStateException leftFiniteRange(Body b, String state) {
         return new IllegalStateException("World.tick: Body#" + b.getId() + " left the range of finite numbers in tick "
             + tickCount + " (" + state + "); check the forces, velocities, gravity and timestep applied to it");
-    }
-
-    /** Moves the proxies of the simulated bodies and of the bodies the application moved. */
-    private void updateBroadPhase(float dt) {
-        // A changed SolverSettings.setAabbMargin re-fattens every box (nothing when unchanged).
-        broadPhase.setMargin(settings.getAabbMargin());
-        float[] box = aabb;
-        for (int i = 0; i < dirtyCount; i++) {
-            Body b = dirtyBodies[i];
-            dirtyBodies[i] = null;
-            if (b.world != this || !b.proxyDirty || b.awake) {
-                continue;
-            }
-            b.proxyDirty = false;
-            b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-            broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], 0f, 0f);
-            ContactManager.forgetLandscape(b);
-        }
-        dirtyCount = 0;
-        Body[] simulated = area.bodies;
-        for (int i = 0, n = area.count; i < n; i++) {
-            Body b = simulated[i];
-            b.proxyDirty = false;
-            b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-            float dx = b.vx * dt;
-            float dy = b.vy * dt;
-            if (!EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])) {
-                throw leftFiniteRange(b, "position (" + b.x + ", " + b.y + "), velocity (" + b.vx + ", " + b.vy
-                    + ") px/s over a " + dt + " s timestep");
-            }
-            boolean moved = broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], dx, dy);
-            contacts.findLandscapeContacts(b, moved, broadPhase);
-        }
     }
 }

@@ -27,13 +27,45 @@ final class Solver {
     private float lastSubstep;
     private int lastIterationCount;
 
+    private final Simulation world;
+
     Solver(Simulation world) {
+        this.world = world;
         step = new SolverStep(bodies, world);
         continuous = new ContinuousSolver(world);
     }
 
     boolean isSolving() {
         return solving;
+    }
+
+    /** Refuses a change of a body's pose, shape or kind while the solver holds a copy of it. */
+    void checkNotSolving(String where) {
+        if (solving) {
+            throw new IllegalStateException(where + ": cannot change a body's pose, shape or kind while the world solves"
+                + " a tick (from a Constraint); change it before tick(), or from an ExternalForce or an event listener");
+        }
+    }
+
+    // While the solver holds a copy of a body (from a Constraint), what the application changes of
+    // its velocity and forces reaches the copy; velocities otherwise read from the body are stale.
+
+    void velocitySet(Body b) {
+        if (solving && b.solverIndex != 0) {
+            bodies.setVelocity(b, b.vx, b.vy, b.w);
+        }
+    }
+
+    void impulseApplied(Body b, float dvx, float dvy, float dw) {
+        if (solving && b.solverIndex != 0) {
+            bodies.addVelocity(b, dvx, dvy, dw);
+        }
+    }
+
+    void forcesChanged(Body b) {
+        if (solving && b.solverIndex != 0) {
+            bodies.refreshForces(b, world.getGravityX(), world.getGravityY(), world.getTickCount());
+        }
     }
 
     int getLastIterationCount() {
