@@ -6,8 +6,11 @@ package org.emini.dynamics;
  * them in the last tick.
  *
  * <p>Contacts persist from tick to tick while the bodies stay close, so their impulses warm-start
- * the solver. Contact objects are pooled by the world: do not keep a reference past the next tick.
- * A contact with no points is a pair that is near but not touching.
+ * the solver. Contact objects are pooled by the world: a reference is good until the contact ends
+ * (its getters then throw {@link IllegalStateException}), and once the object serves another pair
+ * it reads that pair. To keep a contact across ticks, keep its {@link #getHandle() handle} and
+ * look it up with {@link Simulation#findContact(long)}, which answers null once it has ended. A
+ * contact with no points is a pair that is near but not touching.
  *
  * <p>A body with a {@link org.emini.shape.MultiShape} has one contact per pair of parts (and per
  * part and landscape segment); {@link #getPartA()} and {@link #getPartB()} tell which. A landscape
@@ -59,7 +62,30 @@ public final class Contact {
     float friction;
     float restitution;
 
+    // The contact's place in the world's list of every contact object, and how many times the
+    // object has ended: together its handle.
+    int serial = -1;
+    int generation;
+
     Contact() {
+    }
+
+    /** Refuses to read a contact that has ended: it is the pool's, and may soon be another pair. */
+    private void live(String where) {
+        if (index < 0) {
+            throw new IllegalStateException(where + ": the contact has ended (contacts are reused; keep getHandle()"
+                + " and look it up with World.findContact)");
+        }
+    }
+
+    /**
+     * A value that names this contact for as long as it lasts, for {@link Simulation#findContact(long)}.
+     *
+     * @return the handle
+     */
+    public long getHandle() {
+        live("Contact.getHandle");
+        return ((long) serial << 32) | (generation & 0xFFFFFFFFL);
     }
 
     Contact next(Body b) {
@@ -109,6 +135,7 @@ public final class Contact {
      * @return body A
      */
     public Body getBodyA() {
+        live("Contact.getBodyA");
         return bodyA;
     }
 
@@ -118,6 +145,7 @@ public final class Contact {
      * @return body B, or null for a landscape contact
      */
     public Body getBodyB() {
+        live("Contact.getBodyB");
         return bodyB;
     }
 
@@ -128,6 +156,7 @@ public final class Contact {
      * @return the other one; null when that is the landscape
      */
     public Body getOther(Body body) {
+        live("Contact.getOther");
         return body == bodyA ? bodyB : bodyA;
     }
 
@@ -137,6 +166,7 @@ public final class Contact {
      * @return true for a landscape contact
      */
     public boolean isLandscape() {
+        live("Contact.isLandscape");
         return segmentSlot >= 0;
     }
 
@@ -147,6 +177,7 @@ public final class Contact {
      *     since the last tick)
      */
     public int getSegment() {
+        live("Contact.getSegment");
         if (segmentSlot < 0 || landscape.stampOf(segmentSlot) != segmentStamp) {
             return -1;
         }
@@ -160,6 +191,7 @@ public final class Contact {
      * @return the part index
      */
     public int getPartA() {
+        live("Contact.getPartA");
         return partA;
     }
 
@@ -171,6 +203,7 @@ public final class Contact {
      * @return the part index
      */
     public int getPartB() {
+        live("Contact.getPartB");
         return partB;
     }
 
@@ -181,6 +214,7 @@ public final class Contact {
      * @return true when touching
      */
     public boolean isTouching() {
+        live("Contact.isTouching");
         return touching;
     }
 
@@ -190,6 +224,7 @@ public final class Contact {
      * @return the point count
      */
     public int getPointCount() {
+        live("Contact.getPointCount");
         return pointCount;
     }
 
@@ -199,6 +234,7 @@ public final class Contact {
      * @return true when there is exactly one point
      */
     public boolean isSingle() {
+        live("Contact.isSingle");
         return pointCount == 1;
     }
 
@@ -208,6 +244,7 @@ public final class Contact {
      * @return normal x
      */
     public float getNormalX() {
+        live("Contact.getNormalX");
         return normalX;
     }
 
@@ -217,6 +254,7 @@ public final class Contact {
      * @return normal y
      */
     public float getNormalY() {
+        live("Contact.getNormalY");
         return normalY;
     }
 
@@ -227,6 +265,7 @@ public final class Contact {
      * @return x (px)
      */
     public float getPointX(int i) {
+        live("Contact.getPointX");
         return pointX(checkPoint(i));
     }
 
@@ -237,6 +276,7 @@ public final class Contact {
      * @return y (px)
      */
     public float getPointY(int i) {
+        live("Contact.getPointY");
         return pointY(checkPoint(i));
     }
 
@@ -247,6 +287,7 @@ public final class Contact {
      * @return the separation (px)
      */
     public float getSeparation(int i) {
+        live("Contact.getSeparation");
         return separation(checkPoint(i));
     }
 
@@ -258,6 +299,7 @@ public final class Contact {
      * @return the depth (px)
      */
     public float getDepth(int i) {
+        live("Contact.getDepth");
         float d = -separation(checkPoint(i));
         return d > 0f ? d : 0f;
     }
@@ -269,6 +311,7 @@ public final class Contact {
      * @return the impulse (mass·px/s)
      */
     public float getNormalImpulse(int i) {
+        live("Contact.getNormalImpulse");
         return normalImpulse(checkPoint(i));
     }
 
@@ -279,6 +322,7 @@ public final class Contact {
      * @return the impulse (mass·px/s)
      */
     public float getTangentImpulse(int i) {
+        live("Contact.getTangentImpulse");
         return tangentImpulse(checkPoint(i));
     }
 
@@ -290,6 +334,7 @@ public final class Contact {
      * @return the impulse (mass·px/s)
      */
     public float getMaxNormalImpulse(int i) {
+        live("Contact.getMaxNormalImpulse");
         return maxNormalImpulse(checkPoint(i));
     }
 
@@ -300,6 +345,7 @@ public final class Contact {
      * @return the friction coefficient
      */
     public float getFriction() {
+        live("Contact.getFriction");
         return friction;
     }
 
@@ -310,6 +356,7 @@ public final class Contact {
      * @return the restitution coefficient
      */
     public float getElasticity() {
+        live("Contact.getElasticity");
         return restitution;
     }
 

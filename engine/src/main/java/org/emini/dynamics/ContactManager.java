@@ -45,6 +45,9 @@ final class ContactManager implements PairCallback, QueryCallback {
     private final PairCounts pairs = new PairCounts();
     /** Whether this tick left a pair without contacts: the world was at its contact capacity. */
     boolean capacityReached;
+    // Every contact object made, by serial: what a handle names.
+    private Contact[] all = new Contact[16];
+    private int allCount;
 
     // The landscape the contacts refer to; its changes advance the epoch, and a body whose epoch
     // is behind looks for its segments again.
@@ -156,6 +159,16 @@ final class ContactManager implements PairCallback, QueryCallback {
      * taking one new object per new peak, a world whose contact count wanders near its peak (a pile
      * that keeps tumbling) would go on allocating long after it settled.
      */
+    /** The contact a handle names, or null when it has ended. */
+    Contact find(long handle) {
+        int serial = (int) (handle >>> 32);
+        if (serial < 0 || serial >= allCount) {
+            return null;
+        }
+        Contact c = all[serial];
+        return c.generation == (int) handle && c.index >= 0 ? c : null;
+    }
+
     private Contact obtain() {
         if (poolCount == 0) {
             int n = Math.max(16, count >> 3);
@@ -163,7 +176,13 @@ final class ContactManager implements PairCallback, QueryCallback {
                 pool = new Contact[Math.max(n, 2 * pool.length)];
             }
             for (int i = 0; i < n; i++) {
-                pool[i] = new Contact();
+                Contact c = new Contact();
+                if (allCount == all.length) {
+                    all = java.util.Arrays.copyOf(all, 2 * allCount);
+                }
+                c.serial = allCount;
+                all[allCount++] = c;
+                pool[i] = c;
             }
             poolCount = n;
         }
@@ -216,6 +235,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         last.index = i;
         contacts[count] = null;
         c.index = -1;
+        c.generation++;
         c.bodyA = null;
         c.bodyB = null;
         c.landscape = null;

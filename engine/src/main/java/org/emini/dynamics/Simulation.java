@@ -691,6 +691,16 @@ public abstract class Simulation {
     }
 
     /**
+     * The contact a handle names ({@link Contact#getHandle()}), while it lasts.
+     *
+     * @param handle a handle
+     * @return the contact, or null when it has ended (or the handle is of no contact of this world)
+     */
+    public Contact findContact(long handle) {
+        return contacts.find(handle);
+    }
+
+    /**
      * Whether the last tick left pairs of bodies (or a body and a landscape segment) whose boxes
      * met without contacts, because the world held {@link SolverSettings#getMaxContacts()}
      * contacts: those bodies pass through each other until contacts end and make room.
