@@ -406,6 +406,25 @@ final class ContactManager implements PairCallback, QueryCallback {
         activeCount = kept;
     }
 
+    /**
+     * Leaves out of this tick's solve the contacts the listener refuses (the active list is rebuilt
+     * every tick, so they come back next tick), dropping their impulses.
+     */
+    void preSolve(PreSolveListener listener) {
+        int kept = 0;
+        for (int i = 0, n = activeCount; i < n; i++) {
+            Contact c = active[i];
+            active[i] = null;
+            if (c.pointCount == 0 || listener.preSolve(c)) {
+                active[kept++] = c;
+            } else {
+                c.setImpulses(0, 0f, 0f, 0f);
+                c.setImpulses(1, 0f, 0f, 0f);
+            }
+        }
+        activeCount = kept;
+    }
+
     private boolean collideBodies(Contact c, BroadPhase broadPhase, float dt, float speculative) {
         Body a = c.bodyA;
         Body b = c.bodyB;

@@ -695,15 +695,30 @@ final class ContactSolver {
         }
     }
 
-    /** Copies the impulses back to the persistent contacts for warm starting and queries. */
-    void storeImpulses() {
+    /**
+     * Copies the impulses back to the persistent contacts for warm starting and queries, and
+     * reports as hits the contacts whose fastest-approaching point that took an impulse came in
+     * faster than the threshold (infinite: no hits, no cost).
+     */
+    void storeImpulses(StepData step, float hitSpeed) {
+        boolean hits = hitSpeed < Float.POSITIVE_INFINITY;
         for (int k = 0; k < count; k++) {
             Contact c = contacts[k];
             int fo = k * CS;
             int pc = n[k * CI + POINTS];
+            float fastest = hitSpeed;
+            int hitPoint = -1;
             for (int p = 0; p < pc; p++) {
                 int po = fo + P0 + p * PS;
                 c.setImpulses(p, f[po + NIMP], f[po + TIMP], f[po + MAXIMP]);
+                // The relative velocity along the normal is negative while the bodies approach.
+                if (hits && f[po + MAXIMP] > 0f && -f[po + RELVEL] > fastest) {
+                    fastest = -f[po + RELVEL];
+                    hitPoint = p;
+                }
+            }
+            if (hitPoint >= 0) {
+                step.contactHit(c, hitPoint, fastest);
             }
             contacts[k] = null;
         }

@@ -89,6 +89,8 @@ public abstract class Simulation {
     private final SimulationArea area = new SimulationArea();
     private final BodyQuery bodyQuery = new BodyQuery();
     final StepData stepData = new StepData();
+    private PreSolveListener preSolve;
+    private float hitEventThreshold = Float.POSITIVE_INFINITY;
     private long tickCount;
 
     /** Creates an empty world with the original engine's defaults. */
@@ -722,6 +724,47 @@ public abstract class Simulation {
     }
 
     /**
+     * Sets the listener that may leave touching contacts out of a tick's solve (one-way platforms).
+     * Without one, nothing is called and nothing is paid.
+     *
+     * @param listener the listener, or null
+     */
+    public void setPreSolveListener(PreSolveListener listener) {
+        preSolve = listener;
+    }
+
+    /**
+     * The listener that may leave contacts out of a tick's solve.
+     *
+     * @return the listener, or null
+     */
+    public PreSolveListener getPreSolveListener() {
+        return preSolve;
+    }
+
+    /**
+     * Reports in the {@link StepData} every contact whose points took an impulse while approaching
+     * faster than this speed along the normal (a hit, for sounds and damage), with its fastest point.
+     *
+     * @param speed the approach speed (px/s), &gt; 0; {@link Float#POSITIVE_INFINITY} (the default) turns hits off
+     */
+    public void setHitEventThreshold(float speed) {
+        if (!(speed > 0f)) {
+            throw new IllegalArgumentException("World.setHitEventThreshold: speed must be > 0, was " + speed);
+        }
+        hitEventThreshold = speed;
+    }
+
+    /**
+     * The approach speed above which contacts are reported as hits.
+     *
+     * @return the speed (px/s), infinite when hits are off
+     */
+    public float getHitEventThreshold() {
+        return hitEventThreshold;
+    }
+
+    /**
      * The number of ticks run so far.
      *
      * @return the tick count
@@ -777,6 +820,9 @@ public abstract class Simulation {
             contacts.gatherAll();
         }
         contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
+        if (preSolve != null) {
+            contacts.preSolve(preSolve);
+        }
         Body bad = solver.solve(this, area.bodies, area.count, contacts.active, contacts.activeCount,
             constraints.array(), constraints.count(), broadPhase);
         if (bad != null) {

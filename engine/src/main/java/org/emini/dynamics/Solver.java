@@ -151,7 +151,7 @@ final class Solver {
             }
         }
         contacts.applyRestitution(sb, settings.getRestitutionThreshold());
-        contacts.storeImpulses();
+        contacts.storeImpulses(world.stepData, world.getHitEventThreshold());
         for (int c = 0; c < cn; c++) {
             cs[c].finish(step);
             if (!(Math.abs(cs[c].getForce()) <= Float.MAX_VALUE)) {

@@ -9,9 +9,10 @@ import java.util.Arrays;
  *
  * <p>A contact touches when the narrowphase, at the tick's start, finds a point of it at or inside
  * zero separation; it stops touching when none is within {@link SolverSettings#getSpeculativeDistance()}
- * any more, or when its bodies' boxes part (the contact ends). The gap between the two keeps a
- * resting contact from flickering. A contact ends without a report when the application removes
- * one of its bodies or changes its shape, layers or collision switches between ticks.
+ * any more, or when it ends (its bodies' boxes part, or the application removes one of its bodies
+ * or changes its shape, kind, layers or collision switches). The gap between the two keeps a
+ * resting contact from flickering. Ends caused between two ticks are reported with the next tick,
+ * so every begin has its end.
  */
 public final class StepData {
     private Body[] bodies = new Body[0];
@@ -24,21 +25,34 @@ public final class StepData {
     private Body[] endA = new Body[16];
     private Body[] endB = new Body[16];
     private int endCount;
+    private Contact[] hit = new Contact[16];
+    private float[] hitX = new float[16];
+    private float[] hitY = new float[16];
+    private float[] hitSpeed = new float[16];
+    private int hitCount;
     private long tick;
-    private boolean recording;
+    // Ends reported by the last tick (while not ticking); those after it happened between ticks.
+    private int endsOfTick;
+    private boolean ticking;
 
     StepData() {
     }
 
-    /** Starts a tick: forgets the last one's contacts. */
+    /** Starts a tick: forgets the last one's contacts, keeping the ends caused since it. */
     void begin(long tickNumber) {
         Arrays.fill(begun, 0, beginCount, null);
-        Arrays.fill(endA, 0, endCount, null);
-        Arrays.fill(endB, 0, endCount, null);
+        Arrays.fill(hit, 0, hitCount, null);
+        int since = endCount - endsOfTick;
+        System.arraycopy(endA, endsOfTick, endA, 0, since);
+        System.arraycopy(endB, endsOfTick, endB, 0, since);
+        Arrays.fill(endA, since, endCount, null);
+        Arrays.fill(endB, since, endCount, null);
         beginCount = 0;
-        endCount = 0;
+        endCount = since;
+        endsOfTick = 0;
+        hitCount = 0;
         tick = tickNumber;
-        recording = true;
+        ticking = true;
     }
 
     /** Notes the simulated bodies and their poses before the solve moves them. */
@@ -60,9 +74,10 @@ public final class StepData {
         }
     }
 
-    /** Stops recording contact changes: the application's own changes between ticks are not reported. */
+    /** Ends the tick: ends caused from now on belong to the next one. */
     void end() {
-        recording = false;
+        endsOfTick = endCount;
+        ticking = false;
     }
 
     void contactBegan(Contact c) {
@@ -72,10 +87,21 @@ public final class StepData {
         begun[beginCount++] = c;
     }
 
-    void contactEnded(Contact c) {
-        if (!recording) {
-            return;
+    void contactHit(Contact c, int point, float speed) {
+        if (hitCount == hit.length) {
+            int size = 2 * hitCount;
+            hit = Arrays.copyOf(hit, size);
+            hitX = Arrays.copyOf(hitX, size);
+            hitY = Arrays.copyOf(hitY, size);
+            hitSpeed = Arrays.copyOf(hitSpeed, size);
         }
+        hit[hitCount] = c;
+        hitX[hitCount] = c.pointX(point);
+        hitY[hitCount] = c.pointY(point);
+        hitSpeed[hitCount++] = speed;
+    }
+
+    void contactEnded(Contact c) {
         if (endCount == endA.length) {
             endA = Arrays.copyOf(endA, 2 * endCount);
             endB = Arrays.copyOf(endB, 2 * endCount);
@@ -174,12 +200,13 @@ public final class StepData {
     }
 
     /**
-     * The number of contacts that stopped touching in the tick (their contact may be gone).
+     * The number of contacts that stopped touching in the tick, including those ended by the
+     * application's changes before it (their contact objects are gone).
      *
      * @return the count
      */
     public int getEndCount() {
-        return endCount;
+        return ticking ? endCount : endsOfTick;
     }
 
     /**
@@ -204,6 +231,60 @@ public final class StepData {
         return endB[index];
     }
 
+    /**
+     * The number of hits in the tick: contacts that took an impulse at a point approaching faster
+     * than {@link Simulation#getHitEventThreshold()} (none while that is infinite, the default).
+     *
+     * @return the count
+     */
+    public int getHitCount() {
+        return hitCount;
+    }
+
+    /**
+     * A contact that was hit, in the solver's order. Valid until the next tick.
+     *
+     * @param index 0 to {@link #getHitCount()} − 1
+     * @return the contact
+     */
+    public Contact getHitContact(int index) {
+        checkHit(index);
+        return hit[index];
+    }
+
+    /**
+     * @param index 0 to {@link #getHitCount()} − 1
+     * @return x of the hit's fastest point (px)
+     */
+    public float getHitX(int index) {
+        checkHit(index);
+        return hitX[index];
+    }
+
+    /**
+     * @param index 0 to {@link #getHitCount()} − 1
+     * @return y of the hit's fastest point (px)
+     */
+    public float getHitY(int index) {
+        checkHit(index);
+        return hitY[index];
+    }
+
+    /**
+     * @param index 0 to {@link #getHitCount()} − 1
+     * @return the speed at which that point approached, along the normal (px/s)
+     */
+    public float getHitSpeed(int index) {
+        checkHit(index);
+        return hitSpeed[index];
+    }
+
+    private void checkHit(int index) {
+        if (index < 0 || index >= hitCount) {
+            throw new IndexOutOfBoundsException("StepData.getHit: index " + index + " of " + hitCount);
+        }
+    }
+
     private void checkBody(int index) {
         if (index < 0 || index >= bodyCount) {
             throw new IndexOutOfBoundsException("StepData.getBody: index " + index + " of " + bodyCount);
@@ -211,8 +292,9 @@ public final class StepData {
     }
 
     private void checkEnd(int index) {
-        if (index < 0 || index >= endCount) {
-            throw new IndexOutOfBoundsException("StepData.getEnd: index " + index + " of " + endCount);
+        int n = getEndCount();
+        if (index < 0 || index >= n) {
+            throw new IndexOutOfBoundsException("StepData.getEnd: index " + index + " of " + n);
         }
     }
 }
