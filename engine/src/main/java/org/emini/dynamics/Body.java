@@ -54,6 +54,11 @@ public final class Body {
     int solverIndex;
     // Where the last tick's StepData lists this body (checked there).
     int stepIndex = -1;
+    // A sensor: collides with nothing, reports what overlaps it (SensorSet), sorted by id.
+    boolean sensor;
+    Body[] visitors = NO_BODIES;
+    int visitorCount;
+    private static final Body[] NO_BODIES = new Body[0];
     // Bodies this one never collides with (World.disableCollision): a joint's "collide connected" off.
     Body[] noCollide;
     int noCollideCount;
@@ -498,6 +503,36 @@ public final class Body {
         this.interacting = interacting;
         if (world != null) {
             world.proxies.filterChanged(this);
+        }
+    }
+
+    /**
+     * Whether the body is a sensor.
+     *
+     * @return true for a sensor
+     */
+    public boolean isSensor() {
+        return sensor;
+    }
+
+    /**
+     * Makes the body a sensor, or solid again. A sensor collides with nothing (bodies and the
+     * landscape pass through it, and it through them) but reports, in each tick's
+     * {@link StepData}, the bodies that began and stopped overlapping it exactly: those it would
+     * collide with if solid (layers and collision switches count), other sensors excepted. It
+     * costs in proportion to the bodies near it. A dynamic sensor keeps its mass and falls as
+     * before; make it static to hold it still.
+     *
+     * @param sensor true for a sensor
+     */
+    public void setSensor(boolean sensor) {
+        if (this.sensor == sensor) {
+            return;
+        }
+        this.sensor = sensor;
+        if (world != null) {
+            world.proxies.filterChanged(this);
+            world.sensorChanged(this);
         }
     }
 

@@ -61,8 +61,12 @@ final class ContactManager implements PairCallback, QueryCallback {
     }
 
     static boolean shouldCollide(Body a, Body b) {
-        return (a.isDynamic() || b.isDynamic())
-            && a.isInteracting() && b.isInteracting()
+        return (a.isDynamic() || b.isDynamic()) && !a.sensor && !b.sensor && filterAllows(a, b);
+    }
+
+    /** The filter alone: interacting, no shared layer bit, collision not switched off for the pair. */
+    static boolean filterAllows(Body a, Body b) {
+        return a.isInteracting() && b.isInteracting()
             && (a.getCollisionLayers() & b.getCollisionLayers()) == 0
             && (a.noCollideCount == 0 || !a.excludes(b));
     }
@@ -298,7 +302,7 @@ final class ContactManager implements PairCallback, QueryCallback {
             return;
         }
         b.landscapeEpoch = landscapeEpoch;
-        if (!b.isDynamic() || landscape.getSegmentCount() == 0) {
+        if (!b.isDynamic() || b.sensor || landscape.getSegmentCount() == 0) {
             return;
         }
         queryBody = b;
@@ -454,7 +458,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         Landscape l = c.landscape;
         int slot = c.segmentSlot;
         int p = a.proxyId;
-        if ((c.filterDirty && !a.isDynamic()) || l.stampOf(slot) != c.segmentStamp
+        if ((c.filterDirty && (!a.isDynamic() || a.sensor)) || l.stampOf(slot) != c.segmentStamp
             || !l.overlaps(slot, broadPhase.getFatMinX(p), broadPhase.getFatMinY(p), broadPhase.getFatMaxX(p),
                 broadPhase.getFatMaxY(p))) {
             destroy(c);

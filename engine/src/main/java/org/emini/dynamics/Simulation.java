@@ -90,6 +90,7 @@ public abstract class Simulation {
     private final BodyQuery bodyQuery = new BodyQuery();
     final StepData stepData = new StepData();
     private PreSolveListener preSolve;
+    private final SensorSet sensors = new SensorSet();
     private float hitEventThreshold = Float.POSITIVE_INFINITY;
     private long tickCount;
 
@@ -284,6 +285,9 @@ public abstract class Simulation {
         body.awake = false;
         body.solverIndex = 0;
         proxies.create(body);
+        if (body.sensor) {
+            sensors.add(body);
+        }
     }
 
     /**
@@ -306,6 +310,9 @@ public abstract class Simulation {
         }
         contacts.destroyContactsOf(body);
         removeConstraintsOf(body);
+        if (body.sensor) {
+            sensors.remove(body, stepData);
+        }
         bodyRemoved(body);
         proxies.destroy(body);
         bodies.remove(body);
@@ -354,6 +361,15 @@ public abstract class Simulation {
 
     int getBroadPhaseUserData(int proxyId) {
         return broadPhase.getUserData(proxyId);
+    }
+
+    /** A body became a sensor or solid again. */
+    void sensorChanged(Body b) {
+        if (b.sensor) {
+            sensors.add(b);
+        } else {
+            sensors.remove(b, stepData);
+        }
     }
 
     /** A new shape: during a tick its contacts still name the old shape's parts, so they end when it ends. */
@@ -827,6 +843,9 @@ public abstract class Simulation {
             constraints.array(), constraints.count(), broadPhase);
         if (bad != null) {
             throw leftFiniteRange(bad, solver.bodies.describe(bad));
+        }
+        if (!sensors.isEmpty()) {
+            sensors.update(this, stepData);
         }
         tickCount++;
     }

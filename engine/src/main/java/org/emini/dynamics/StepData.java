@@ -22,37 +22,29 @@ public final class StepData {
     private float[] startAngle = new float[16];
     private Contact[] begun = new Contact[16];
     private int beginCount;
-    private Body[] endA = new Body[16];
-    private Body[] endB = new Body[16];
-    private int endCount;
+    private final BodyPairs ends = new BodyPairs();
     private Contact[] hit = new Contact[16];
     private float[] hitX = new float[16];
     private float[] hitY = new float[16];
     private float[] hitSpeed = new float[16];
     private int hitCount;
+    private final BodyPairs sensorBegins = new BodyPairs();
+    private final BodyPairs sensorEnds = new BodyPairs();
     private long tick;
-    // Ends reported by the last tick (while not ticking); those after it happened between ticks.
-    private int endsOfTick;
-    private boolean ticking;
 
     StepData() {
     }
 
-    /** Starts a tick: forgets the last one's contacts, keeping the ends caused since it. */
+    /** Starts a tick: forgets the last one's events, keeping the ends caused since it. */
     void begin(long tickNumber) {
         Arrays.fill(begun, 0, beginCount, null);
         Arrays.fill(hit, 0, hitCount, null);
-        int since = endCount - endsOfTick;
-        System.arraycopy(endA, endsOfTick, endA, 0, since);
-        System.arraycopy(endB, endsOfTick, endB, 0, since);
-        Arrays.fill(endA, since, endCount, null);
-        Arrays.fill(endB, since, endCount, null);
         beginCount = 0;
-        endCount = since;
-        endsOfTick = 0;
         hitCount = 0;
+        ends.beginTick(true);
+        sensorBegins.beginTick(false);
+        sensorEnds.beginTick(true);
         tick = tickNumber;
-        ticking = true;
     }
 
     /** Notes the simulated bodies and their poses before the solve moves them. */
@@ -76,8 +68,9 @@ public final class StepData {
 
     /** Ends the tick: ends caused from now on belong to the next one. */
     void end() {
-        endsOfTick = endCount;
-        ticking = false;
+        ends.endTick();
+        sensorBegins.endTick();
+        sensorEnds.endTick();
     }
 
     void contactBegan(Contact c) {
@@ -101,13 +94,16 @@ public final class StepData {
         hitSpeed[hitCount++] = speed;
     }
 
+    void sensorBegan(Body sensor, Body visitor) {
+        sensorBegins.add(sensor, visitor);
+    }
+
+    void sensorEnded(Body sensor, Body visitor) {
+        sensorEnds.add(sensor, visitor);
+    }
+
     void contactEnded(Contact c) {
-        if (endCount == endA.length) {
-            endA = Arrays.copyOf(endA, 2 * endCount);
-            endB = Arrays.copyOf(endB, 2 * endCount);
-        }
-        endA[endCount] = c.bodyA;
-        endB[endCount++] = c.bodyB;
+        ends.add(c.bodyA, c.bodyB);
     }
 
     /**
@@ -206,7 +202,7 @@ public final class StepData {
      * @return the count
      */
     public int getEndCount() {
-        return ticking ? endCount : endsOfTick;
+        return ends.count();
     }
 
     /**
@@ -216,8 +212,7 @@ public final class StepData {
      * @return the body
      */
     public Body getEndBodyA(int index) {
-        checkEnd(index);
-        return endA[index];
+        return ends.get(index, 0, "getEndBodyA");
     }
 
     /**
@@ -227,8 +222,7 @@ public final class StepData {
      * @return the body, or null for a landscape segment
      */
     public Body getEndBodyB(int index) {
-        checkEnd(index);
-        return endB[index];
+        return ends.get(index, 1, "getEndBodyB");
     }
 
     /**
@@ -279,6 +273,57 @@ public final class StepData {
         return hitSpeed[index];
     }
 
+    /**
+     * The number of bodies that began overlapping a sensor ({@link Body#setSensor}) in the tick.
+     *
+     * @return the count
+     */
+    public int getSensorBeginCount() {
+        return sensorBegins.count();
+    }
+
+    /**
+     * @param index 0 to {@link #getSensorBeginCount()} − 1
+     * @return the sensor
+     */
+    public Body getSensorBeginSensor(int index) {
+        return sensorBegins.get(index, 0, "getSensorBeginSensor");
+    }
+
+    /**
+     * @param index 0 to {@link #getSensorBeginCount()} − 1
+     * @return the body that began overlapping it
+     */
+    public Body getSensorBeginVisitor(int index) {
+        return sensorBegins.get(index, 1, "getSensorBeginVisitor");
+    }
+
+    /**
+     * The number of bodies that stopped overlapping a sensor in the tick, including those removed
+     * from the world and sensors removed or made solid (whose visitors all end).
+     *
+     * @return the count
+     */
+    public int getSensorEndCount() {
+        return sensorEnds.count();
+    }
+
+    /**
+     * @param index 0 to {@link #getSensorEndCount()} − 1
+     * @return the sensor
+     */
+    public Body getSensorEndSensor(int index) {
+        return sensorEnds.get(index, 0, "getSensorEndSensor");
+    }
+
+    /**
+     * @param index 0 to {@link #getSensorEndCount()} − 1
+     * @return the body that stopped overlapping it
+     */
+    public Body getSensorEndVisitor(int index) {
+        return sensorEnds.get(index, 1, "getSensorEndVisitor");
+    }
+
     private void checkHit(int index) {
         if (index < 0 || index >= hitCount) {
             throw new IndexOutOfBoundsException("StepData.getHit: index " + index + " of " + hitCount);
@@ -288,13 +333,6 @@ public final class StepData {
     private void checkBody(int index) {
         if (index < 0 || index >= bodyCount) {
             throw new IndexOutOfBoundsException("StepData.getBody: index " + index + " of " + bodyCount);
-        }
-    }
-
-    private void checkEnd(int index) {
-        int n = getEndCount();
-        if (index < 0 || index >= n) {
-            throw new IndexOutOfBoundsException("StepData.getEnd: index " + index + " of " + n);
         }
     }
 }
