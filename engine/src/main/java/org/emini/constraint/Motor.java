@@ -96,6 +96,19 @@ public final class Motor implements Constraint {
         return body;
     }
 
+    @Override
+    public int getBodyCount() {
+        return 1;
+    }
+
+    @Override
+    public Body getBody(int index) {
+        if (index != 0) {
+            throw new IndexOutOfBoundsException("Constraint.getBody: index " + index + " of 1");
+        }
+        return body;
+    }
+
     /**
      * Whether the motor drives the angular velocity.
      *

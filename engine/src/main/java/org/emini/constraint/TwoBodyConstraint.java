@@ -148,6 +148,19 @@ public abstract class TwoBodyConstraint implements Constraint {
         return old == 0f ? 1f : h / old;
     }
 
+    @Override
+    public int getBodyCount() {
+        return 2;
+    }
+
+    @Override
+    public Body getBody(int index) {
+        if (index != 0 && index != 1) {
+            throw new IndexOutOfBoundsException("Constraint.getBody: index " + index + " of 2");
+        }
+        return index == 0 ? bodyA : bodyB;
+    }
+
     /**
      * The first body.
      *

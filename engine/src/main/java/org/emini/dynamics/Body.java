@@ -54,6 +54,11 @@ public final class Body {
     int solverIndex;
     // Where the last tick's StepData lists this body (checked there).
     int stepIndex = -1;
+    // Sleeping (see Sleep): the rest time, and the ring of the island it sleeps with.
+    boolean sleeping;
+    boolean sleepAllowed = true;
+    float sleepTime;
+    Body sleepNext;
     // A sensor: collides with nothing, reports what overlaps it (SensorSet), sorted by id.
     boolean sensor;
     Body[] visitors = NO_BODIES;
@@ -185,6 +190,7 @@ public final class Body {
         this.x = x;
         this.y = y;
         if (world != null) {
+            world.sleep.wake(this);
             world.proxies.geometryChanged(this);
         }
     }
@@ -240,6 +246,7 @@ public final class Body {
         c = EMath.cos(radians);
         s = EMath.sin(radians);
         if (world != null) {
+            world.sleep.wake(this);
             world.proxies.geometryChanged(this);
         }
     }
@@ -284,6 +291,7 @@ public final class Body {
             this.vx = vx;
             this.vy = vy;
             if (world != null) {
+                world.sleep.wake(this);
                 world.solver.velocitySet(this);
             }
         }
@@ -308,6 +316,7 @@ public final class Body {
         if (dynamic && rotatable) {
             w = omega;
             if (world != null) {
+                world.sleep.wake(this);
                 world.solver.velocitySet(this);
             }
         }
@@ -456,6 +465,7 @@ public final class Body {
             w = 0f;
         }
         if (world != null) {
+            world.sleep.wake(this);
             world.proxies.filterChanged(this);
         }
     }
@@ -480,7 +490,9 @@ public final class Body {
             w = 0f;
         }
         if (world != null) {
+            world.sleep.wake(this);
             world.solver.forcesChanged(this);
+            world.sleep.wake(this);
             world.solver.velocitySet(this);
         }
     }
@@ -502,7 +514,47 @@ public final class Body {
     public void setInteracting(boolean interacting) {
         this.interacting = interacting;
         if (world != null) {
+            world.sleep.wake(this);
             world.proxies.filterChanged(this);
+        }
+    }
+
+    /**
+     * Whether the body sleeps: it rested long enough, with the bodies it touches, to be left out of
+     * the simulation until something wakes it ({@link Simulation#setSleepingEnabled}).
+     *
+     * @return true while sleeping
+     */
+    public boolean isSleeping() {
+        return sleeping;
+    }
+
+    /** Wakes the body, and the bodies it sleeps with, if it sleeps. */
+    public void wakeUp() {
+        if (world != null) {
+            world.sleep.wake(this);
+        }
+    }
+
+    /**
+     * Whether the body may fall asleep.
+     *
+     * @return true (the default) when it may
+     */
+    public boolean isSleepingAllowed() {
+        return sleepAllowed;
+    }
+
+    /**
+     * Lets the body fall asleep, or keeps it (and every body it touches) awake, as a player's body
+     * should be.
+     *
+     * @param allowed false to keep it awake
+     */
+    public void setSleepingAllowed(boolean allowed) {
+        sleepAllowed = allowed;
+        if (!allowed) {
+            wakeUp();
         }
     }
 
@@ -531,6 +583,7 @@ public final class Body {
         }
         this.sensor = sensor;
         if (world != null) {
+            world.sleep.wake(this);
             world.proxies.filterChanged(this);
             world.sensorChanged(this);
         }
@@ -553,6 +606,7 @@ public final class Body {
     public void setGravityAffected(boolean affected) {
         this.gravityAffected = affected;
         if (world != null) {
+            world.sleep.wake(this);
             world.solver.forcesChanged(this);
         }
     }
@@ -613,6 +667,7 @@ public final class Body {
     public void setCollisionLayers(int bits) {
         layers = bits;
         if (world != null) {
+            world.sleep.wake(this);
             world.proxies.filterChanged(this);
         }
     }
@@ -637,6 +692,7 @@ public final class Body {
         forceX += fx;
         forceY += fy;
         if (world != null) {
+            world.sleep.wake(this);
             world.solver.forcesChanged(this);
         }
     }
@@ -667,6 +723,7 @@ public final class Body {
         applyForce(fx, fy);
         torque += moment;
         if (world != null) {
+            world.sleep.wake(this);
             world.solver.forcesChanged(this);
         }
     }
@@ -686,6 +743,7 @@ public final class Body {
             forceX += m * ax;
             forceY += m * ay;
             if (world != null) {
+                world.sleep.wake(this);
                 world.solver.forcesChanged(this);
             }
         }
@@ -701,6 +759,7 @@ public final class Body {
         forcesForThisTick();
         torque += t;
         if (world != null) {
+            world.sleep.wake(this);
             world.solver.forcesChanged(this);
         }
     }
@@ -724,6 +783,7 @@ public final class Body {
             vx += im * jx;
             vy += im * jy;
             if (world != null) {
+                world.sleep.wake(this);
                 world.solver.impulseApplied(this, im * jx, im * jy, 0f);
             }
         }
@@ -749,6 +809,7 @@ public final class Body {
         if (dynamic && rotatable) {
             w += dw;
             if (world != null) {
+                world.sleep.wake(this);
                 world.solver.impulseApplied(this, 0f, 0f, dw);
             }
         }
@@ -765,6 +826,7 @@ public final class Body {
             float dw = shape.getInverseInertia() * impulse;
             w += dw;
             if (world != null) {
+                world.sleep.wake(this);
                 world.solver.impulseApplied(this, 0f, 0f, dw);
             }
         }

@@ -24,6 +24,26 @@ public interface Constraint {
     boolean concernsBody(Body body);
 
     /**
+     * The number of bodies this constraint acts on, so that sleeping bodies joined by it sleep and
+     * wake together. The default, −1, means unknown: then every body it concerns stays awake.
+     *
+     * @return the count, or −1
+     */
+    default int getBodyCount() {
+        return -1;
+    }
+
+    /**
+     * A body this constraint acts on.
+     *
+     * @param index 0 to {@link #getBodyCount()} − 1
+     * @return the body
+     */
+    default Body getBody(int index) {
+        throw new IndexOutOfBoundsException("Constraint.getBody: index " + index + " of " + getBodyCount());
+    }
+
+    /**
      * Computes what stays fixed over the tick (anchors, effective masses) and applies nothing yet.
      *
      * @param step the tick's solver state

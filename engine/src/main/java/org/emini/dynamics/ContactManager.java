@@ -385,9 +385,39 @@ final class ContactManager implements PairCallback, QueryCallback {
         activeCount = k;
     }
 
+    /**
+     * Appends to the active contacts those of the given bodies not gathered yet this tick (bodies
+     * woken during it), in contact-array order.
+     *
+     * @return where the appended ones start
+     */
+    int gatherMore(Body[] bodies, int n, long tick) {
+        int from = activeCount;
+        int k = 0;
+        for (int i = 0; i < n; i++) {
+            Body b = bodies[i];
+            for (Contact c = b.contactList; c != null; c = c.next(b)) {
+                if (c.gathered != tick) {
+                    c.gathered = tick;
+                    if (k == keys.length) {
+                        keys = Arrays.copyOf(keys, 2 * k);
+                    }
+                    keys[k++] = c.index;
+                }
+            }
+        }
+        HeapSort.sort(keys, k);
+        ensureActive(from + k);
+        for (int i = 0; i < k; i++) {
+            active[from + i] = contacts[(int) keys[i]];
+        }
+        activeCount = from + k;
+        return from;
+    }
+
     private void ensureActive(int n) {
         if (active.length < n) {
-            active = new Contact[Math.max(n, 2 * active.length)];
+            active = Arrays.copyOf(active, Math.max(n, 2 * active.length));
         }
     }
 
@@ -396,9 +426,9 @@ final class ContactManager implements PairCallback, QueryCallback {
      * overlap. The speculative margin grows with the distance the pair can close in one tick, so
      * bodies moving several pixels per tick are caught before they overlap.
      */
-    void collide(BroadPhase broadPhase, float dt, float speculative) {
-        int kept = 0;
-        for (int i = 0; i < activeCount; i++) {
+    void collide(BroadPhase broadPhase, float dt, float speculative, int from) {
+        int kept = from;
+        for (int i = from; i < activeCount; i++) {
             Contact c = active[i];
             active[i] = null;
             boolean alive = c.segmentSlot >= 0 ? collideLandscape(c, broadPhase, dt, speculative)

@@ -91,6 +91,7 @@ public abstract class Simulation {
     final StepData stepData = new StepData();
     private PreSolveListener preSolve;
     private final SensorSet sensors = new SensorSet();
+    final Sleep sleep = new Sleep();
     private float hitEventThreshold = Float.POSITIVE_INFINITY;
     private long tickCount;
 
@@ -211,8 +212,13 @@ public abstract class Simulation {
      * @param gy y component (px/s²)
      */
     public void setGravity(float gx, float gy) {
-        gravityX = Check.finite("World.setGravity", "gx", gx);
-        gravityY = Check.finite("World.setGravity", "gy", gy);
+        Check.finite("World.setGravity", "gx", gx);
+        Check.finite("World.setGravity", "gy", gy);
+        if (gx != gravityX || gy != gravityY) {
+            gravityX = gx;
+            gravityY = gy;
+            sleep.wakeAll(this);
+        }
     }
 
     /**
@@ -308,6 +314,7 @@ public abstract class Simulation {
         if (body == null || body.world != this) {
             return false;
         }
+        sleep.wakeNeighbours(body);
         contacts.destroyContactsOf(body);
         removeConstraintsOf(body);
         if (body.sensor) {
@@ -374,6 +381,7 @@ public abstract class Simulation {
 
     /** A new shape: during a tick its contacts still name the old shape's parts, so they end when it ends. */
     void bodyShapeChanged(Body b) {
+        sleep.wake(b);
         if (changes.isOpen()) {
             changes.add(shapeChange, b, true);
             proxies.geometryChanged(b);
@@ -608,6 +616,7 @@ public abstract class Simulation {
      */
     public void addConstraint(Constraint constraint) {
         constraints.add(constraint);
+        sleep.wakeConstrained(constraint, this);
     }
 
     /**
@@ -617,7 +626,11 @@ public abstract class Simulation {
      * @return true when it was in this world
      */
     public boolean removeConstraint(Constraint constraint) {
-        return constraints.remove(constraint);
+        boolean removed = constraints.remove(constraint);
+        if (removed) {
+            sleep.wakeConstrained(constraint, this);
+        }
+        return removed;
     }
 
     /**
@@ -740,6 +753,30 @@ public abstract class Simulation {
     }
 
     /**
+     * Lets bodies fall asleep (off by default, as in the original engine, where nothing sleeps: a
+     * world ported from it behaves as before; games with many resting bodies turn it on). Bodies
+     * that moved slower than {@link SolverSettings#getSleepLinearTolerance()} and
+     * {@link SolverSettings#getSleepAngularTolerance()} for {@link SolverSettings#getTimeToSleep()},
+     * together with every body they touch or are constrained to, stop being simulated and cost
+     * nothing until an awake body reaches them or the application changes them. Turning it off
+     * wakes every body.
+     *
+     * @param enabled true to let bodies sleep
+     */
+    public void setSleepingEnabled(boolean enabled) {
+        sleep.setEnabled(enabled, this);
+    }
+
+    /**
+     * Whether bodies may fall asleep.
+     *
+     * @return true when sleeping is on
+     */
+    public boolean isSleepingEnabled() {
+        return sleep.isEnabled();
+    }
+
+    /**
      * Sets the listener that may leave touching contacts out of a tick's solve (one-way platforms).
      * Without one, nothing is called and nothing is paid.
      *
@@ -830,12 +867,15 @@ public abstract class Simulation {
                 + ", " + overflow.vy + ") px/s over a " + dt + " s timestep");
         }
         contacts.updatePairs(broadPhase);
-        if (area.isBounded()) {
+        if (area.isBounded() || sleep.isEnabled()) {
             contacts.gather(area.bodies, area.count, tickCount);
         } else {
             contacts.gatherAll();
         }
-        contacts.collide(broadPhase, dt, settings.getSpeculativeDistance());
+        contacts.collide(broadPhase, dt, settings.getSpeculativeDistance(), 0);
+        if (sleep.isEnabled()) {
+            wakeTouched(dt);
+        }
         if (preSolve != null) {
             contacts.preSolve(preSolve);
         }
@@ -844,10 +884,28 @@ public abstract class Simulation {
         if (bad != null) {
             throw leftFiniteRange(bad, solver.bodies.describe(bad));
         }
+        if (sleep.isEnabled()) {
+            sleep.afterSolve(area.bodies, area.count, contacts.active, contacts.activeCount, constraints.array(),
+                constraints.count(), settings, dt);
+        }
         if (!sensors.isEmpty()) {
             sensors.update(this, stepData);
         }
         tickCount++;
+    }
+
+    /**
+     * Islands an awake body reached join this tick's solve, with their contacts (collided now), so
+     * that the blow lands on moving bodies, as without sleep; until no more wake.
+     */
+    private void wakeTouched(float dt) {
+        int from = 0;
+        while (sleep.wakeTouched(contacts.active, from, contacts.activeCount)) {
+            area.collect(this, broadPhase, bodies.ordered(), bodies.count());
+            stepData.recordStart(area.bodies, area.count);
+            from = contacts.gatherMore(area.bodies, area.count, tickCount);
+            contacts.collide(broadPhase, dt, settings.getSpeculativeDistance(), from);
+        }
     }
 
     /** The tick's one error for a body whose state no float holds, with that state described. */

@@ -83,7 +83,7 @@ final class SimulationArea implements QueryCallback {
         if (!bounded) {
             ensure(allCount);
             for (int i = 0; i < allCount; i++) {
-                if (all[i].isDynamic()) {
+                if (all[i].isDynamic() && !all[i].sleeping) {
                     bodies[count++] = all[i];
                 }
             }
@@ -132,7 +132,7 @@ final class SimulationArea implements QueryCallback {
     @Override
     public boolean reportProxy(int proxyId) {
         Body b = world.bodyInSlot(broadPhase.getUserData(proxyId));
-        if (b == null || !b.isDynamic()) {
+        if (b == null || !b.isDynamic() || b.sleeping) {
             return true;
         }
         // The fat box overlaps; the body counts as inside when its own box does.
