@@ -2,12 +2,14 @@ package org.emini.dynamics;
 
 import org.emini.internal.Check;
 import org.emini.math.EMath;
+
 /**
  * Tuning of the contact solver and collision margins. Every value has a unit and a stated origin.
  *
  * <p>Lengths are in pixels. The defaults assume bodies of roughly 10 to 100 px, as in the original
  * engine's worlds (its boxes are usually 20 px); the Box2D v3 defaults they derive from are given in
- * metres, converted at 20 px per metre.
+ * metres, converted at 20 px per metre. For worlds of much smaller or larger bodies, set the
+ * {@linkplain #setLengthScale length scale} rather than each tolerance.
  */
 public final class SolverSettings {
     /** Default of {@link #getMaxContacts()}: 2²⁰. */
@@ -33,6 +35,7 @@ public final class SolverSettings {
     private float sleepLinearTolerance = 1f;
     private float sleepAngularTolerance = 2f * EMath.PI / 180f;
     private float timeToSleep = 0.5f;
+    private float lengthScale = 1f;
 
     /** Creates the default settings. */
     public SolverSettings() {
@@ -447,5 +450,52 @@ public final class SolverSettings {
      */
     public void setTimeToSleep(float seconds) {
         timeToSleep = Check.positive("SolverSettings.setTimeToSleep", "seconds", seconds);
+    }
+
+    /** The smallest length scale: tolerances a thousandth of the defaults (bodies of about 0.02 px). */
+    public static final float MIN_LENGTH_SCALE = 1e-3f;
+    /** The largest length scale: tolerances a thousand times the defaults (bodies of about 20,000 px). */
+    public static final float MAX_LENGTH_SCALE = 1e3f;
+
+    /**
+     * The size of the world's typical body relative to the 20 px bodies the defaults are tuned for.
+     * Default 1.
+     *
+     * @return the scale
+     */
+    public float getLengthScale() {
+        return lengthScale;
+    }
+
+    /**
+     * Sets the size of the world's typical body relative to 20 px (0.025 for 0.5 px bodies, 25 for
+     * 500 px ones; Box2D v3's length units per metre, over 20): every length and speed tolerance
+     * (linear slop, speculative distance, broadphase margin, contact and joint push speeds,
+     * restitution threshold, convergence and impact tolerances, time-of-impact depth, sleep speed)
+     * is multiplied by the
+     * ratio of the new scale to the old, so a scene scaled in size (and gravity) behaves as the
+     * original. Frequencies, ratios and times do not scale. Set it before tuning single tolerances,
+     * which it scales too. Shapes still need {@code Shape.MIN_SIZE} (0.25 px) across, so at small
+     * scales the thinnest parts bound the scale from below.
+     *
+     * @param scale the scale, from {@link #MIN_LENGTH_SCALE} to {@link #MAX_LENGTH_SCALE}
+     */
+    public void setLengthScale(float scale) {
+        if (!(scale >= MIN_LENGTH_SCALE && scale <= MAX_LENGTH_SCALE)) {
+            throw new IllegalArgumentException("SolverSettings.setLengthScale: scale must be in " + MIN_LENGTH_SCALE + ".."
+                + MAX_LENGTH_SCALE + ", was " + scale);
+        }
+        float r = scale / lengthScale;
+        lengthScale = scale;
+        linearSlop *= r;
+        speculativeDistance *= r;
+        aabbMargin *= r;
+        contactPushMaxVelocity *= r;
+        jointPushMaxVelocity *= r;
+        restitutionThreshold *= r;
+        convergenceTolerance *= r;
+        impactTolerance *= r;
+        timeOfImpactTarget *= r;
+        sleepLinearTolerance *= r;
     }
 }
