@@ -508,7 +508,8 @@ public final class Body {
      * damping, forces and impulses do not act on it. It pushes dynamic bodies and is not pushed; a
      * body resting on it is carried by friction. It collides with dynamic bodies only: static and
      * kinematic bodies and the landscape do not stop it. A dynamic body made kinematic keeps its
-     * velocity; a body made static loses it.
+     * velocity. {@code setKinematic(false)} makes a kinematic body static (it loses its velocity)
+     * and leaves a static or dynamic body as it is.
      *
      * <pre>{@code
      * Body platform = new Body(0f, 300f, Shape.createRectangle(200f, 20f), false);
@@ -517,10 +518,12 @@ public final class Body {
      * world.addBody(platform);
      * }</pre>
      *
-     * @param kinematic true for kinematic, false for static
+     * @param kinematic true for kinematic; false makes a kinematic body static
      */
     public void setKinematic(boolean kinematic) {
-        setKind("Body.setKinematic", false, kinematic);
+        if (kinematic || this.kinematic) {
+            setKind("Body.setKinematic", false, kinematic);
+        }
     }
 
     private void setKind(String where, boolean dynamic, boolean kinematic) {

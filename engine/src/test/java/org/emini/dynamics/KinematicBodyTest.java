@@ -377,16 +377,21 @@ class KinematicBodyTest {
         assertEquals(0f, b.getVelocityY(), "no gravity once kinematic");
         b.setDynamic(true);
         assertTrue(b.isDynamic() && !b.isKinematic());
+        b.setKinematic(false);
+        assertTrue(b.isDynamic(), "setKinematic(false) leaves a dynamic body dynamic");
         world.tick();
         assertTrue(b.getVelocityY() > 0f, "falls once dynamic");
+        b.setKinematic(true);
         b.setKinematic(false);
-        assertTrue(b.isStatic());
+        assertTrue(b.isStatic(), "setKinematic(false) makes a kinematic body static");
         assertEquals(0f, b.getVelocityX(), "made static: no velocity");
         Body copy = new Body(b);
         b.setKinematic(true);
         assertTrue(new Body(b).isKinematic());
         assertTrue(copy.isStatic());
         assertTrue(b.toString().contains("kinematic"), b.toString());
+        b.setDynamic(false);
+        assertTrue(b.isStatic(), "setDynamic(false) makes any body static");
     }
 
     @Test
