@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.emini.AllocationWindows;
 import org.emini.shape.Shape;
 import org.emini.world.World;
 import org.junit.jupiter.api.Test;
@@ -392,6 +393,27 @@ class KinematicBodyTest {
         assertTrue(b.toString().contains("kinematic"), b.toString());
         b.setDynamic(false);
         assertTrue(b.isStatic(), "setDynamic(false) makes any body static");
+    }
+
+    /** Kinematic bodies pushing and spinning through a pile, with the sweep in their frame: no allocation. */
+    @Test
+    void ticksWithKinematicBodiesAllocateNothing() {
+        World world = DeterminismTest.rain(6);
+        Body paddle = kinematic(0f, -60f, Shape.createRectangle(160f, 6f));
+        paddle.setAngularVelocity(3f);
+        world.addBody(paddle);
+        Body sweeper = kinematic(-250f, -30f, Shape.createRectangle(8f, 60f));
+        sweeper.setVelocity(40f, 0f);
+        world.addBody(sweeper);
+        for (int t = 0; t < 300; t++) {
+            world.tick();
+        }
+        AllocationWindows allocated = AllocationWindows.measure(5, () -> {
+            for (int t = 0; t < 100; t++) {
+                world.tick();
+            }
+        });
+        assertEquals(0L, allocated.least(), "100 ticks with kinematic bodies, " + allocated);
     }
 
     @Test
