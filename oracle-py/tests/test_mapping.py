@@ -247,6 +247,68 @@ def test_bodies_sharing_a_layer_bit_do_not_collide(loader, ground, ball, collide
     assert lands(loader, ground, ball) == collide
 
 
+# Box2D's rule table (b2ShouldShapesCollide) beside the layers: the same non-zero group decides alone
+# (positive: collide, negative: never), else each mask must hold a category of the other; a shared
+# layer bit keeps the pair apart whatever the filter.
+@pytest.mark.parametrize("ground, ball, collide", [
+    ("categories: [0]", "mask: [0]", True),
+    ("categories: [1]", "mask: [0]", False),
+    ("mask: [2]", "categories: [1]", False),
+    ("categories: [1], mask: [2]", "categories: [2], mask: [1]", True),
+    ("categories: [], group: 4", "mask: [], group: 4", True),
+    ("group: -2", "group: -2", False),
+    ("group: -2", "group: -3", True),
+    ("mask: [5], group: 1", "group: -1", False),
+    ("group: 3, layers: [6]", "group: 3, layers: [6]", False),
+])
+def test_box2ds_filter_and_the_layers_both_decide(loader, ground, ball, collide):
+    assert lands(loader, ground, ball) == collide
+
+
+def test_a_kinematic_platform_carries_a_box_by_friction(loader):
+    """At rest on a platform moving at V: accelerated at mu g until it moves with it, at T = V/(mu g),
+    having moved V^2/(2 mu g); the platform is pushed by nothing and feels no gravity."""
+    doc = run(loader, """
+world: {ticksPerSecond: 60}
+shapes:
+  deck: {type: rectangle, width: 2000, height: 20, friction: 1}
+  box: {type: rectangle, width: 20, height: 20, friction: 0.5}
+bodies:
+  - {name: platform, shape: deck, position: [0, 10], kinematic: true, velocity: [50, 0]}
+  - {name: box, shape: box, position: [0, -10]}
+run: {duration: 3, record: {bodies: all}}
+""")
+    t = doc["time"]
+    vx = column(doc, "box", "vx")
+    x = column(doc, "box", "x")
+    half = min(range(len(t)), key=lambda i: abs(t[i] - 0.5))
+    assert vx[half] == pytest.approx(25, abs=2)
+    one = min(range(len(t)), key=lambda i: abs(t[i] - 1.0))
+    assert x[one] == pytest.approx(25, abs=2)
+    assert x[-1] == pytest.approx(125, abs=2)
+    assert vx[-1] == pytest.approx(50, abs=0.5)
+    assert column(doc, "platform", "y")[-1] == 10
+    assert column(doc, "platform", "x")[-1] == pytest.approx(150, abs=1e-6)
+
+
+def test_a_velocity_action_moves_a_kinematic_body(loader):
+    doc = run(loader, """
+world: {gravity: [0, 0]}
+bodies: [{name: lift, shape: {type: rectangle, width: 40, height: 10}, kinematic: true}]
+actions: [{at: 1, type: velocity, body: lift, velocity: [0, -20]}]
+run: {duration: 2, record: {bodies: all}}
+""")
+    assert column(doc, "lift", "y")[-1] == pytest.approx(-20, abs=1.5)
+
+
+def test_a_static_body_with_a_velocity_is_refused(loader):
+    with pytest.raises(Exception, match="kinematic: true"):
+        load(loader, """
+bodies: [{name: wall, shape: {type: circle, radius: 5}, static: true, velocity: [1, 0]}]
+run: {duration: 1}
+""")
+
+
 def test_landscape_stops_bodies_whatever_their_layers_or_interacting_flag(loader):
     doc = run(loader, """
 bodies:

@@ -175,6 +175,8 @@ def build(scene: Scene) -> Built:
         s = spec.state
         if s.static:
             body = pymunk.Body(body_type=pymunk.Body.STATIC)
+        elif s.kinematic:
+            body = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
         else:
             inertia = moment(pieces) if s.rotatable else math.inf
             body = pymunk.Body(spec.shape.mass, inertia)
@@ -238,32 +240,50 @@ def _no_gravity_velocity(body, gravity, damping, dt):
     pymunk.Body.update_velocity(body, (0.0, 0.0), damping, dt)
 
 
-def _filters(scene: Scene):
-    """ShapeFilter per body: Emini's "bodies sharing a layer bit do not collide", as categories and masks.
+def _filter_key(state):
+    return frozenset(state.layers), state.categories, state.mask, state.group
 
-    Each distinct layer set of an interacting body gets one category bit; its mask holds the bits of
-    every layer set it shares no bit with (the empty set shares none, so layer-less bodies collide with
-    everything interacting). Non-interacting bodies only meet the landscape, which meets everything.
+
+def _collide(a, b):
+    """Emini's rule between two filter keys: no shared layer bit, and Box2D's categories, mask, group."""
+    layers_a, cat_a, mask_a, group_a = a
+    layers_b, cat_b, mask_b, group_b = b
+    if layers_a & layers_b:
+        return False
+    if group_a == group_b and group_a != 0:
+        return group_a > 0
+    return (cat_a & mask_b) != 0 and (cat_b & mask_a) != 0
+
+
+def _filters(scene: Scene):
+    """ShapeFilter per body: Emini's "bodies sharing a layer bit do not collide" and Box2D's filter
+    (categories, mask, group), both at once, as categories and masks.
+
+    Each distinct filter (layer set, categories, mask, group) of an interacting body gets one category
+    bit; its mask holds the bits of every filter it collides with, itself included when it does
+    (the relation is symmetric). Without Box2D's fields this is the layer sets alone: layer-less
+    bodies collide with everything interacting. Non-interacting bodies only meet the landscape, which
+    meets everything.
     """
     sets = []
     for b in scene.bodies:
-        key = frozenset(b.state.layers)
+        key = _filter_key(b.state)
         if b.state.interacting and key not in sets:
             sets.append(key)
     if len(sets) > MAX_LAYER_CLASSES:
-        raise UnsupportedScene(f"{len(sets)} distinct collision layer sets; the filter mapping holds "
-                               f"{MAX_LAYER_CLASSES}")
+        raise UnsupportedScene(f"{len(sets)} distinct collision filters (layer sets, categories, masks, "
+                               f"groups); the filter mapping holds {MAX_LAYER_CLASSES}")
     masks = {}
     for i, a in enumerate(sets):
         m = LANDSCAPE_BIT
         for j, b in enumerate(sets):
-            if not (a & b):
+            if _collide(a, b):
                 m |= 1 << j
         masks[a] = pymunk.ShapeFilter(categories=1 << i, mask=m)
     non_interacting = pymunk.ShapeFilter(categories=NON_INTERACTING_BIT, mask=LANDSCAPE_BIT)
 
     def of(spec: Body):
-        return masks[frozenset(spec.state.layers)] if spec.state.interacting else non_interacting
+        return masks[_filter_key(spec.state)] if spec.state.interacting else non_interacting
     return of
 
 

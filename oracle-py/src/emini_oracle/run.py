@@ -87,9 +87,16 @@ class Schedule:
         if a.kind == "emit":
             return  # a particle burst; pymunk has no particles, and they never act on bodies
         body = built.bodies[a.body]
-        if body.body_type != pymunk.Body.DYNAMIC:
-            return  # Emini ignores motion given to a static body
         rotatable = built.specs[a.body].state.rotatable
+        if body.body_type == pymunk.Body.KINEMATIC and a.kind == "velocity":
+            # A kinematic body moves by the velocity set; impulses and forces do not act on it.
+            if a.vector is not None:
+                body.velocity = a.vector
+            if not math.isnan(a.value) and rotatable:
+                body.angular_velocity = a.value
+            return
+        if body.body_type != pymunk.Body.DYNAMIC:
+            return  # no impulse or force acts on a static or kinematic body
         if a.kind == "impulse":
             point = a.point if a.point is not None else tuple(body.position)
             if rotatable:

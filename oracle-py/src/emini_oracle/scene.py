@@ -8,6 +8,7 @@ tests check that body by body against the harness's `expand` command.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import re
@@ -92,10 +93,17 @@ class BodyState:
     interacting: bool = True
     gravity: bool = True
     layers: tuple = ()
+    kinematic: bool = False
+    # Box2D's filter, as unsigned 32-bit sets: category bit 0, every mask bit, group 0 by default.
+    categories: int = 1
+    mask: int = 0xFFFFFFFF
+    group: int = 0
 
     def with_angle(self, angle):
-        return BodyState(self.static, angle, self.vx, self.vy, self.angular_velocity, self.rotatable,
-                         self.interacting, self.gravity, self.layers)
+        return dataclasses.replace(self, angle=angle)
+
+    def default_filter(self):
+        return self.categories == 1 and self.mask == 0xFFFFFFFF and self.group == 0
 
 
 @dataclass
@@ -108,10 +116,17 @@ class Body:
 
     def to_json(self):
         s = self.state
-        return {"name": self.name, "position": [self.x, self.y], "static": s.static, "angle": s.angle,
-                "velocity": [s.vx, s.vy], "angularVelocity": s.angular_velocity, "rotatable": s.rotatable,
-                "interacting": s.interacting, "gravity": s.gravity, "layers": list(s.layers),
-                "shape": self.shape.to_json()}
+        out = {"name": self.name, "position": [self.x, self.y], "static": s.static, "angle": s.angle,
+               "velocity": [s.vx, s.vy], "angularVelocity": s.angular_velocity, "rotatable": s.rotatable,
+               "interacting": s.interacting, "gravity": s.gravity, "layers": list(s.layers),
+               "shape": self.shape.to_json()}
+        if s.kinematic:
+            out["kinematic"] = True
+        if not s.default_filter():
+            out["categories"] = _bit_list(s.categories)
+            out["mask"] = _bit_list(s.mask)
+            out["group"] = s.group
+        return out
 
 
 @dataclass
@@ -345,6 +360,20 @@ def _vec(v, dx=0.0, dy=0.0):
     return (float(v[0]), float(v[1])) if v is not None else (dx, dy)
 
 
+def _bits(v, default):
+    """A list of bit numbers (0..31) as an unsigned 32-bit set, or the default when absent."""
+    if v is None:
+        return default
+    out = 0
+    for k in v:
+        out |= 1 << int(k)
+    return out
+
+
+def _bit_list(bits):
+    return [k for k in range(32) if bits >> k & 1]
+
+
 def _num(o, key, default):
     return float(o[key]) if key in o else default
 
@@ -445,10 +474,21 @@ class _Reader:
             self.problem(f"{path}.angleDeg", "give angle or angleDeg, not both")
         angle = math.radians(float(b["angleDeg"])) if "angleDeg" in b else _num(b, "angle", 0.0)
         vx, vy = _vec(b.get("velocity"))
-        return BodyState(static=bool(b.get("static", False)), angle=angle, vx=vx, vy=vy,
-                         angular_velocity=_num(b, "angularVelocity", 0.0),
+        static = bool(b.get("static", False))
+        kinematic = bool(b.get("kinematic", False))
+        omega = _num(b, "angularVelocity", 0.0)
+        if static and kinematic:
+            self.problem(f"{path}.kinematic", "a body is static or kinematic, not both")
+        elif static and (vx != 0 or vy != 0):
+            self.problem(f"{path}.velocity", "a static body does not move; give kinematic: true to move it by its velocity")
+        elif static and omega != 0:
+            self.problem(f"{path}.angularVelocity", "a static body does not turn; give kinematic: true to turn it")
+        return BodyState(static=static, angle=angle, vx=vx, vy=vy,
+                         angular_velocity=omega,
                          rotatable=bool(b.get("rotatable", True)), interacting=bool(b.get("interacting", True)),
-                         gravity=bool(b.get("gravity", True)), layers=tuple(int(x) for x in b.get("layers") or []))
+                         gravity=bool(b.get("gravity", True)), layers=tuple(int(x) for x in b.get("layers") or []),
+                         kinematic=kinematic, categories=_bits(b.get("categories"), 1),
+                         mask=_bits(b.get("mask"), 0xFFFFFFFF), group=int(b.get("group", 0)))
 
     def generator(self, g, path):
         shapes = []

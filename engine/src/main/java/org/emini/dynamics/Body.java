@@ -12,18 +12,29 @@ import org.emini.shape.Shape;
  * (x, y) to (x·cosθ − y·sinθ, x·sinθ + y·cosθ), so on a y-down screen a growing angle (a positive
  * angular velocity) turns the body clockwise.
  *
- * <p>Static bodies never move and have infinite mass whatever their shape's mass. Dynamic bodies
- * move under gravity, contacts, constraints and the forces applied to them. All setters refuse NaN
- * and infinite values with an {@link IllegalArgumentException} naming the call.
+ * <p>A body is of one of three kinds. Static bodies never move and have infinite mass whatever
+ * their shape's mass. Dynamic bodies move under gravity, contacts, constraints and the forces applied
+ * to them. Kinematic bodies ({@link #setKinematic(boolean)}) move by the velocity the application
+ * sets, every tick, and nothing else: infinite mass, no gravity, no damping, forces and impulses
+ * ignored; they push dynamic bodies and carry them by friction, and pass through static and other
+ * kinematic bodies and the landscape (a moving platform, an elevator, a paddle). All setters refuse
+ * NaN and infinite values with an {@link IllegalArgumentException} naming the call.
+ *
+ * <p>Which pairs collide: see {@link #setCollisionLayers(int)} (the original engine's layers) and
+ * {@link #setCategoryBits(int)} (Box2D's categories, mask and group); both must allow a pair.
  */
 public final class Body {
     private Shape shape;
     private boolean dynamic;
+    private boolean kinematic;
     private boolean rotatable = true;
     private boolean interacting = true;
     private boolean gravityAffected = true;
     private boolean bullet;
     private int layers;
+    private int categoryBits = DEFAULT_CATEGORY_BITS;
+    private int maskBits = DEFAULT_MASK_BITS;
+    private int groupIndex;
     private Object userData;
 
     // State: position of the shape origin (px), accumulated angle (rad) and its rotation (c, s).
@@ -74,6 +85,11 @@ public final class Body {
     // The world's landscape epoch when this body last looked for its segments; −1 to look again.
     int landscapeEpoch = -1;
 
+    /** The category bits of a new body: category 0 alone (Box2D's default, {@code 0x0001}). */
+    public static final int DEFAULT_CATEGORY_BITS = 1;
+    /** The mask bits of a new body: every category ({@code 0xFFFFFFFF}). */
+    public static final int DEFAULT_MASK_BITS = -1;
+
     /**
      * Creates a body.
      *
@@ -98,11 +114,15 @@ public final class Body {
     public Body(Body other) {
         shape = other.shape;
         dynamic = other.dynamic;
+        kinematic = other.kinematic;
         rotatable = other.rotatable;
         interacting = other.interacting;
         gravityAffected = other.gravityAffected;
         bullet = other.bullet;
         layers = other.layers;
+        categoryBits = other.categoryBits;
+        maskBits = other.maskBits;
+        groupIndex = other.groupIndex;
         userData = other.userData;
         x = other.x;
         y = other.y;
@@ -279,21 +299,30 @@ public final class Body {
     }
 
     /**
-     * Sets the linear velocity. Ignored motion on a static body: static bodies keep zero velocity.
+     * Sets the linear velocity of a dynamic or kinematic body. A kinematic body keeps it until it
+     * is set again; a dynamic one starts from it.
      *
      * @param vx the x component (px/s)
      * @param vy the y component (px/s)
+     * @throws IllegalStateException when the body is static and the velocity is not zero: a static
+     *     body never moves (make it kinematic to move it by a velocity); zero is accepted, as it is
+     *     the static body's velocity
      */
     public void setVelocity(float vx, float vy) {
         Check.finite("Body.setVelocity", "vx", vx);
         Check.finite("Body.setVelocity", "vy", vy);
-        if (dynamic) {
-            this.vx = vx;
-            this.vy = vy;
-            if (world != null) {
-                world.sleep.wake(this);
-                world.solver.velocitySet(this);
+        if (!dynamic && !kinematic) {
+            if (vx != 0f || vy != 0f) {
+                throw new IllegalStateException("Body.setVelocity: " + this + " cannot move; a velocity of (" + vx + ", "
+                    + vy + ") px/s needs a kinematic body (setKinematic(true)) or a dynamic one (setDynamic(true))");
             }
+            return;
+        }
+        this.vx = vx;
+        this.vy = vy;
+        if (world != null) {
+            world.sleep.wake(this);
+            world.solver.velocitySet(this);
         }
     }
 
@@ -307,13 +336,20 @@ public final class Body {
     }
 
     /**
-     * Sets the angular velocity (ignored for static and non-rotatable bodies).
+     * Sets the angular velocity of a dynamic or kinematic body (ignored for a body that may not
+     * rotate).
      *
      * @param omega ω (rad/s)
+     * @throws IllegalStateException when the body is static and ω is not zero (see
+     *     {@link #setVelocity(float, float)})
      */
     public void setAngularVelocity(float omega) {
         Check.finite("Body.setAngularVelocity", "omega", omega);
-        if (dynamic && rotatable) {
+        if (!dynamic && !kinematic && omega != 0f) {
+            throw new IllegalStateException("Body.setAngularVelocity: " + this + " cannot turn; an angular velocity of "
+                + omega + " rad/s needs a kinematic body (setKinematic(true)) or a dynamic one (setDynamic(true))");
+        }
+        if ((dynamic || kinematic) && rotatable) {
             w = omega;
             if (world != null) {
                 world.sleep.wake(this);
@@ -389,7 +425,7 @@ public final class Body {
     }
 
     /**
-     * The body's mass: the shape's mass for a dynamic body, infinite for a static one.
+     * The body's mass: the shape's mass for a dynamic body, infinite for a static or kinematic one.
      *
      * @return the mass
      */
@@ -398,7 +434,7 @@ public final class Body {
     }
 
     /**
-     * The inverse mass the solver uses (0 for static bodies).
+     * The inverse mass the solver uses (0 for static and kinematic bodies).
      *
      * @return 1/mass, or 0
      */
@@ -407,7 +443,7 @@ public final class Body {
     }
 
     /**
-     * The moment of inertia about the body's origin (infinite when static or not rotatable).
+     * The moment of inertia about the body's origin (infinite when static, kinematic or not rotatable).
      *
      * @return the inertia (mass·px²)
      */
@@ -416,7 +452,7 @@ public final class Body {
     }
 
     /**
-     * The inverse inertia the solver uses (0 for static or non-rotatable bodies).
+     * The inverse inertia the solver uses (0 for static, kinematic or non-rotatable bodies).
      *
      * @return 1/inertia, or 0
      */
@@ -425,7 +461,8 @@ public final class Body {
     }
 
     /**
-     * Kinetic energy ½mv² + ½Iω² (0 for static bodies).
+     * Kinetic energy ½mv² + ½Iω² (0 for static and kinematic bodies: their infinite mass puts them
+     * outside any energy balance).
      *
      * @return the kinetic energy (mass·px²/s²)
      */
@@ -441,25 +478,75 @@ public final class Body {
     }
 
     /**
-     * Whether the body moves.
+     * Whether the body is dynamic: moved by gravity, contacts, constraints and forces.
      *
-     * @return true when dynamic
+     * @return true when dynamic (false for static and kinematic bodies)
      */
     public boolean isDynamic() {
         return dynamic;
     }
 
     /**
-     * Makes the body dynamic or static. A body made static loses its velocity.
+     * Whether the body is kinematic: moved by the velocity the application sets alone.
      *
-     * @param dynamic true for dynamic
+     * @return true when kinematic
+     */
+    public boolean isKinematic() {
+        return kinematic;
+    }
+
+    /**
+     * Whether the body is static: neither dynamic nor kinematic.
+     *
+     * @return true when static
+     */
+    public boolean isStatic() {
+        return !dynamic && !kinematic;
+    }
+
+    /**
+     * Makes the body dynamic, or static. A body made static loses its velocity; a kinematic body
+     * made dynamic keeps it.
+     *
+     * @param dynamic true for dynamic, false for static
      */
     public void setDynamic(boolean dynamic) {
+        setKind("Body.setDynamic", dynamic, false);
+    }
+
+    /**
+     * Makes the body kinematic, or static. A kinematic body moves by its velocity (px/s) and
+     * angular velocity (rad/s), which only the application changes ({@link #setVelocity},
+     * {@link #setAngularVelocity}), every tick it is simulated (inside the simulation area, if one
+     * is set), whether or not anything touches it. Its mass and inertia are infinite; gravity,
+     * damping, forces and impulses do not act on it. It pushes dynamic bodies and is not pushed; a
+     * body resting on it is carried by friction. It collides with dynamic bodies only: static and
+     * kinematic bodies and the landscape do not stop it. A dynamic body made kinematic keeps its
+     * velocity. {@code setKinematic(false)} makes a kinematic body static (it loses its velocity)
+     * and leaves a static or dynamic body as it is.
+     *
+     * <pre>{@code
+     * Body platform = new Body(0f, 300f, Shape.createRectangle(200f, 20f), false);
+     * platform.setKinematic(true);
+     * platform.setVelocity(50f, 0f); // 50 px/s to the right, until set again
+     * world.addBody(platform);
+     * }</pre>
+     *
+     * @param kinematic true for kinematic; false makes a kinematic body static
+     */
+    public void setKinematic(boolean kinematic) {
+        if (kinematic || this.kinematic) {
+            setKind("Body.setKinematic", false, kinematic);
+        }
+    }
+
+    private void setKind(String where, boolean dynamic, boolean kinematic) {
         if (world != null) {
-            world.solver.checkNotSolving("Body.setDynamic");
+            world.solver.checkNotSolving(where);
         }
         this.dynamic = dynamic;
-        if (!dynamic) {
+        this.kinematic = kinematic;
+        if (!dynamic && !kinematic) {
             vx = 0f;
             vy = 0f;
             w = 0f;
@@ -633,7 +720,9 @@ public final class Body {
 
     /**
      * Adds a collision layer. Two bodies that share any layer do not collide with each other
-     * (the original engine's meaning), which is how jointed bodies are kept from colliding.
+     * (the original engine's meaning), which is how jointed bodies are kept from colliding. Layers
+     * and Box2D's filter ({@link #setCategoryBits(int)}) both apply: a pair collides only when
+     * neither keeps it apart.
      *
      * @param layer the layer, 0 to 31
      */
@@ -666,6 +755,102 @@ public final class Body {
      */
     public void setCollisionLayers(int bits) {
         layers = bits;
+        if (world != null) {
+            world.sleep.wake(this);
+            world.proxies.filterChanged(this);
+        }
+    }
+
+    /**
+     * The categories this body belongs to, as a bit set (Box2D's {@code categoryBits}).
+     *
+     * @return the category bits; {@link #DEFAULT_CATEGORY_BITS} unless set
+     */
+    public int getCategoryBits() {
+        return categoryBits;
+    }
+
+    /**
+     * Sets the categories this body belongs to (Box2D's {@code categoryBits}, 32 of them). With
+     * Box2D's rule, two bodies A and B collide when they share a positive group index, never when
+     * they share a negative one, and otherwise when each one's mask holds a category of the other:
+     * {@code (catA & maskB) != 0 && (catB & maskA) != 0}. The original engine's layers
+     * ({@link #setCollisionLayers(int)}) apply as well: both rules must let a pair collide. The
+     * defaults (category bit 0, every mask bit, group 0) keep every pair the layers allow.
+     *
+     * <pre>{@code
+     * final int PLAYER = 1 << 1, ENEMY = 1 << 2, DEBRIS = 1 << 3;
+     * player.setCategoryBits(PLAYER);
+     * debris.setCategoryBits(DEBRIS);
+     * debris.setMaskBits(~(PLAYER | DEBRIS)); // debris hits enemies and the level, not the player or itself
+     * }</pre>
+     *
+     * @param bits the category bits (any int; 0 puts the body in no category, so it collides
+     *     only through a shared positive group)
+     */
+    public void setCategoryBits(int bits) {
+        categoryBits = bits;
+        filterChanged();
+    }
+
+    /**
+     * The categories this body collides with, as a bit set (Box2D's {@code maskBits}).
+     *
+     * @return the mask bits; {@link #DEFAULT_MASK_BITS} unless set
+     */
+    public int getMaskBits() {
+        return maskBits;
+    }
+
+    /**
+     * Sets the categories this body collides with (Box2D's {@code maskBits}); see
+     * {@link #setCategoryBits(int)} for the rule.
+     *
+     * @param bits the mask bits (any int; −1, all bits, is the default)
+     */
+    public void setMaskBits(int bits) {
+        maskBits = bits;
+        filterChanged();
+    }
+
+    /**
+     * The collision group (Box2D's {@code groupIndex}).
+     *
+     * @return the group index; 0 unless set
+     */
+    public int getGroupIndex() {
+        return groupIndex;
+    }
+
+    /**
+     * Sets the collision group (Box2D's {@code groupIndex}): bodies with the same positive group
+     * always collide and bodies with the same negative group never do, whatever their categories
+     * and masks (the original engine's layers, {@link Simulation#disableCollision} and the world's
+     * filter callback still apply); group 0, the default, leaves the decision to categories and masks.
+     *
+     * @param group the group index, any int
+     */
+    public void setGroupIndex(int group) {
+        groupIndex = group;
+        filterChanged();
+    }
+
+    /**
+     * Box2D's filter rule between two bodies' categories, masks and groups (see
+     * {@link #setCategoryBits(int)}).
+     *
+     * @param a a body
+     * @param b another body
+     * @return true when the rule lets them collide
+     */
+    static boolean filterAllows(Body a, Body b) {
+        if (a.groupIndex == b.groupIndex && a.groupIndex != 0) {
+            return a.groupIndex > 0;
+        }
+        return (a.maskBits & b.categoryBits) != 0 && (a.categoryBits & b.maskBits) != 0;
+    }
+
+    private void filterChanged() {
         if (world != null) {
             world.sleep.wake(this);
             world.proxies.filterChanged(this);
@@ -833,9 +1018,9 @@ public final class Body {
     }
 
     /**
-     * Whether the world's last tick moved this body: a dynamic body inside the simulation area, or
-     * any dynamic body without one. Static bodies, bodies frozen outside the area and bodies added
-     * since the last tick stood still.
+     * Whether the world's last tick moved this body: a dynamic or kinematic body inside the
+     * simulation area, or any such body without one. Static bodies, bodies frozen outside the area
+     * and bodies added since the last tick stood still.
      *
      * @return true when the last tick simulated it
      */
@@ -928,6 +1113,6 @@ public final class Body {
 
     @Override
     public String toString() {
-        return "Body#" + id + (dynamic ? " dynamic" : " static") + " at (" + x + ", " + y + ")";
+        return "Body#" + id + (dynamic ? " dynamic" : kinematic ? " kinematic" : " static") + " at (" + x + ", " + y + ")";
     }
 }

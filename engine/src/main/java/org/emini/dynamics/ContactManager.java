@@ -60,6 +60,11 @@ final class ContactManager implements PairCallback, QueryCallback {
         this.world = world;
     }
 
+    /**
+     * The built-in rules: one body dynamic (static and kinematic bodies never meet each other), both
+     * interacting, no shared layer (the original engine's rule), Box2D's categories, masks and
+     * groups, and no {@link Simulation#disableCollision}.
+     */
     static boolean shouldCollide(Body a, Body b) {
         return (a.isDynamic() || b.isDynamic()) && !a.sensor && !b.sensor && filterAllows(a, b);
     }
@@ -68,7 +73,14 @@ final class ContactManager implements PairCallback, QueryCallback {
     static boolean filterAllows(Body a, Body b) {
         return a.isInteracting() && b.isInteracting()
             && (a.getCollisionLayers() & b.getCollisionLayers()) == 0
+            && Body.filterAllows(a, b)
             && (a.noCollideCount == 0 || !a.excludes(b));
+    }
+
+    /** The application's filter, when set, after the built-in rules allowed the pair. */
+    private boolean filterAccepts(Body a, Body b) {
+        CollisionFilter filter = world.getCollisionFilter();
+        return filter == null || filter.shouldCollide(a, b);
     }
 
     static int partCount(Shape s) {
@@ -86,7 +98,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         if (a == null || b == null || a == b || !shouldCollide(a, b)) {
             return;
         }
-        if (pairs.contains(PairCounts.bodies(slotA, slotB))) {
+        if (pairs.contains(PairCounts.bodies(slotA, slotB)) || !filterAccepts(a, b)) {
             return;
         }
         int na = partCount(a.getShape());
@@ -464,7 +476,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         Body b = c.bodyB;
         if (c.filterDirty) {
             c.filterDirty = false;
-            if (!shouldCollide(a, b)) {
+            if (!shouldCollide(a, b) || !filterAccepts(a, b)) {
                 destroy(c);
                 return false;
             }

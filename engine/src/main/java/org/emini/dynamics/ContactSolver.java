@@ -103,7 +103,8 @@ final class ContactSolver {
             Body b = c.bodyB != null ? c.bodyB : a;
             int ia = a.solverIndex;
             int ib = c.bodyB != null ? b.solverIndex : 0;
-            if (ia == 0 && ib == 0) {
+            // Zero inverse mass on both sides (static, frozen or kinematic bodies): nothing to solve.
+            if (st[ia * STRIDE + IM] == 0f && st[ib * STRIDE + IM] == 0f) {
                 continue;
             }
             contacts[k] = c;
@@ -118,16 +119,17 @@ final class ContactSolver {
             f[fo + NY] = ny;
             f[fo + FRICTION] = c.friction;
             f[fo + RESTITUTION] = c.restitution;
-            Softness sf = (ia == 0 || ib == 0) ? staticSoft : soft;
-            f[fo + BIAS_RATE] = sf.biasRate;
-            f[fo + MASS_SCALE] = sf.massScale;
-            f[fo + IMPULSE_SCALE] = sf.impulseScale;
             int oa = ia * STRIDE;
             int ob = ib * STRIDE;
             float mA = st[oa + IM];
             float iA = st[oa + II];
             float mB = st[ob + IM];
             float iB = st[ob + II];
+            // Against a body of infinite mass (static, frozen or kinematic) the stiffer setting.
+            Softness sf = (mA == 0f || mB == 0f) ? staticSoft : soft;
+            f[fo + BIAS_RATE] = sf.biasRate;
+            f[fo + MASS_SCALE] = sf.massScale;
+            f[fo + IMPULSE_SCALE] = sf.impulseScale;
             float vax = st[oa + VX];
             float vay = st[oa + VY];
             float wa = st[oa + W];
@@ -411,7 +413,7 @@ final class ContactSolver {
                         float px = (d1 + d2) * nx;
                         float py = (d1 + d2) * ny;
                         if (!useBias) {
-                            markHot(ia, ib, Math.max((d1 < 0f ? -d1 : d1) * f[p1 + KN], (d2 < 0f ? -d2 : d2) * f[p2 + KN]),
+                            markHot(mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, Math.max((d1 < 0f ? -d1 : d1) * f[p1 + KN], (d2 < 0f ? -d2 : d2) * f[p2 + KN]),
                                 hotTolerance, current);
                         }
                         vax -= mA * px;
@@ -461,7 +463,7 @@ final class ContactSolver {
                     f[po + MAXIMP] = d;
                 }
                 if (!useBias) {
-                    markHot(ia, ib, (d < 0f ? -d : d) * f[po + KN], hotTolerance, current);
+                    markHot(mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, (d < 0f ? -d : d) * f[po + KN], hotTolerance, current);
                 }
                 float px = d * nx;
                 float py = d * ny;
@@ -515,9 +517,9 @@ final class ContactSolver {
                     if (sep > 0f) {
                         // A gap that could close before the tick ends needs the solve: warm starts alone
                         // would let the bodies pass into each other. Gravity closes only gaps to static
-                        // bodies (slot 0), at its component along the normal.
+                        // and kinematic bodies (zero inverse mass), at its component along the normal.
                         float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-                        float an = oa == 0 ? gravityX * nx + gravityY * ny : (ob == 0 ? -gravityX * nx - gravityY * ny : 0f);
+                        float an = mA == 0f ? gravityX * nx + gravityY * ny : (mB == 0f ? -gravityX * nx - gravityY * ny : 0f);
                         float reach = ((vn < 0f ? vn : 0f) + (an < 0f ? an : 0f) * horizon) * horizon;
                         if (sep + reach <= 0f) {
                             dv = Float.POSITIVE_INFINITY;
@@ -563,7 +565,8 @@ final class ContactSolver {
     /** Marks both bodies for the next hot pass when an impulse changed their relative speed by more than tolerance. */
     private void markHot(int ia, int ib, float change, float tolerance, int current) {
         if (change > tolerance) {
-            // Slot 0 is every static body: marking it would make all static contacts hot.
+            // Slot 0 is every static body: marking it would make all static contacts hot. Callers pass 0
+            // for a kinematic body too, whose velocity no impulse changes.
             if (ia != 0) {
                 hot[ia] = current;
             }

@@ -20,12 +20,18 @@ import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
 /**
- * The fast-body pass: after the solver, a body that moved more than half its smallest extent in
- * the tick is swept from its start pose to its end pose against static bodies and the landscape
- * (and, for bullets, against other bodies at their end poses). If it would have touched one on the way, it is put
- * back at the time of impact; its velocity is kept, so the next tick's speculative contact
- * resolves the collision. Speculative contacts alone stop most fast bodies; this pass catches the
- * rest, notably fast-spinning bodies with long arms.
+ * The fast-body pass: after the solver, a dynamic body that moved more than half its smallest
+ * extent in the tick is swept from its start pose to its end pose against static and kinematic
+ * bodies and the landscape (and, for bullets, against dynamic bodies too, taken at their end poses).
+ * If it would have touched one on the way, it is put back at the time of impact; its velocity is
+ * kept, so the next tick's speculative contact resolves the collision. Speculative contacts alone
+ * stop most fast bodies; this pass catches the rest, notably fast-spinning bodies with long arms.
+ *
+ * <p>A moving kinematic body is swept against in its own frame: the mover's motion relative to it
+ * over the tick, so a body the kinematic one carries or pushes along (no relative motion) is not
+ * put back, and a body it hits is put back touching it where it ends the tick. Kinematic bodies are
+ * not swept themselves: nothing they pass through stops them, and a dynamic body they hit is caught
+ * by the pair's speculative contact, whose margin grows with both bodies' speeds.
  */
 final class ContinuousSolver implements QueryCallback {
     private final Simulation world;
@@ -48,6 +54,12 @@ final class ContinuousSolver implements QueryCallback {
     private float target;
     private float fraction;
     private float[] state;
+    // When the earliest hit is with a moving kinematic body: the mover's pose at that time, put
+    // relative to the kinematic body's end pose.
+    private boolean kinematicHit;
+    private float hitX;
+    private float hitY;
+    private float hitAngle;
 
     private final LandscapeSweep segments = new LandscapeSweep();
 
@@ -76,7 +88,7 @@ final class ContinuousSolver implements QueryCallback {
             if (!EMath.isFinite(travel + st[o + X] + st[o + Y] + st[o + VX] + st[o + VY] + st[o + W])) {
                 return escaped(b);
             }
-            if (travel <= 2f * TimeOfImpact.coreRadius(shape)) {
+            if (b.isKinematic() || travel <= 2f * TimeOfImpact.coreRadius(shape)) {
                 continue;
             }
             moving = b;
@@ -93,6 +105,7 @@ final class ContinuousSolver implements QueryCallback {
             cx1 = x1 + st[o + C] * lx - st[o + S] * ly;
             cy1 = y1 + st[o + S] * lx + st[o + C] * ly;
             fraction = 1f;
+            kinematicHit = false;
             shape.computeAabb(x0, y0, b.c, b.s, box);
             shape.computeAabb(x1, y1, st[o + C], st[o + S], box2);
             float minX = Math.min(box[0], box2[0]);
@@ -103,14 +116,21 @@ final class ContinuousSolver implements QueryCallback {
                 // Finite poses whose swept box overflows: no query can place it.
                 return escaped(b);
             }
-            // Only bullets sweep against dynamic bodies; the others search the static tree alone.
-            if (b.isBullet()) {
+            // Only bullets sweep against dynamic bodies; the others search the static tree alone, and
+            // the moving proxies' too when kinematic bodies are among them.
+            if (b.isBullet() || sb.kinematicCount > 0) {
                 broadPhase.query(minX, minY, maxX, maxY, this);
             } else {
                 broadPhase.queryStatic(minX, minY, maxX, maxY, this);
             }
             segments.sweep(minX, minY, maxX, maxY);
-            if (fraction < 1f) {
+            if (kinematicHit) {
+                st[o + X] = hitX;
+                st[o + Y] = hitY;
+                st[o + ANGLE] = hitAngle;
+                st[o + C] = EMath.cos(hitAngle);
+                st[o + S] = EMath.sin(hitAngle);
+            } else if (fraction < 1f) {
                 float a = a0 + fraction * da;
                 st[o + X] = x0 + fraction * dx;
                 st[o + Y] = y0 + fraction * dy;
@@ -133,10 +153,10 @@ final class ContinuousSolver implements QueryCallback {
     @Override
     public boolean reportProxy(int proxyId) {
         Body other = world.bodyInSlot(world.getBroadPhaseUserData(proxyId));
-        if (other == null || other == moving || !ContactManager.shouldCollide(moving, other)) {
+        if (other == null || other == moving || !world.shouldCollide(moving, other)) {
             return true;
         }
-        // Bullets sweep against everything; other bodies only against static ones.
+        // Bullets sweep against everything; other bodies only against static and kinematic ones.
         if (other.isDynamic() && !moving.isBullet()) {
             return true;
         }
@@ -145,6 +165,10 @@ final class ContinuousSolver implements QueryCallback {
         float oc = other.c;
         float os = other.s;
         if (other.solverIndex != 0) {
+            if (other.isKinematic()) {
+                sweepAgainstKinematic(other);
+                return true;
+            }
             // A moving obstacle is taken at its end pose.
             int o = other.solverIndex * STRIDE;
             ox = state[o + X];
@@ -155,8 +179,46 @@ final class ContinuousSolver implements QueryCallback {
         float t = toi.solve(moving.getShape(), x0, y0, a0, x1, y1, a1, other.getShape(), ox, oy, oc, os, target);
         if (t < fraction) {
             fraction = t;
+            kinematicHit = false;
         }
         return true;
+    }
+
+    /**
+     * The sweep in a moving kinematic body's frame: the obstacle held at its start pose K0, the
+     * mover from its start pose to its end pose seen from the obstacle's end pose K1 (K0·K1⁻¹·B1).
+     * A hit puts the mover at its pose of that time in the obstacle's frame, carried to K1.
+     */
+    private void sweepAgainstKinematic(Body other) {
+        int o = other.solverIndex * STRIDE;
+        float kx0 = other.x;
+        float ky0 = other.y;
+        float kc0 = other.c;
+        float ks0 = other.s;
+        float kx1 = state[o + X];
+        float ky1 = state[o + Y];
+        float kc1 = state[o + C];
+        float ks1 = state[o + S];
+        float turn = state[o + ANGLE] - other.angle;
+        // Rotation by −turn: from the end frame back to the start frame.
+        float bc = kc0 * kc1 + ks0 * ks1;
+        float bs = ks0 * kc1 - kc0 * ks1;
+        float ex = x1 - kx1;
+        float ey = y1 - ky1;
+        float rx1 = kx0 + bc * ex - bs * ey;
+        float ry1 = ky0 + bs * ex + bc * ey;
+        float ra1 = a1 - turn;
+        float t = toi.solve(moving.getShape(), x0, y0, a0, rx1, ry1, ra1, other.getShape(), kx0, ky0, kc0, ks0, target);
+        if (t < fraction) {
+            fraction = t;
+            kinematicHit = true;
+            // The pose at t relative to K0, carried to K1 (rotation by +turn about the obstacle).
+            float px = x0 + t * (rx1 - x0) - kx0;
+            float py = y0 + t * (ry1 - y0) - ky0;
+            hitX = kx1 + bc * px + bs * py;
+            hitY = ky1 - bs * px + bc * py;
+            hitAngle = a0 + t * (ra1 - a0) + turn;
+        }
     }
 
     /**
@@ -209,6 +271,7 @@ final class ContinuousSolver implements QueryCallback {
             float t = toi.solveSegment(shape, x0, y0, a0, x1, y1, a1, segment, target);
             if (t < fraction) {
                 fraction = t;
+                kinematicHit = false;
             }
             return true;
         }

@@ -28,7 +28,7 @@ final class ProxySync {
         b.proxyDirty = false;
         ContactManager.forgetLandscape(b);
         b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-        b.proxyId = broadPhase.createProxy(box[0], box[1], box[2], box[3], b.slot, !b.isDynamic());
+        b.proxyId = broadPhase.createProxy(box[0], box[1], box[2], box[3], b.slot, b.isStatic());
     }
 
     void destroy(Body b) {
@@ -58,7 +58,7 @@ final class ProxySync {
 
     void filterChanged(Body b) {
         contacts.markFilterDirty(b);
-        broadPhase.setStatic(b.proxyId, !b.isDynamic());
+        broadPhase.setStatic(b.proxyId, b.isStatic());
         broadPhase.touchProxy(b.proxyId);
         ContactManager.forgetLandscape(b);
     }

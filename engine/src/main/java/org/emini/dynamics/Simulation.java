@@ -75,6 +75,7 @@ public abstract class Simulation {
     private float gravityY = 100f;
     private float dampingLateral;
     private float dampingRotational;
+    private CollisionFilter collisionFilter;
     private final SolverSettings settings = new SolverSettings();
 
     private final BodyTable bodies = new BodyTable();
@@ -418,13 +419,15 @@ public abstract class Simulation {
     }
 
     /**
-     * Restricts the simulation to a rectangle. A dynamic body counts as inside when its bounding
-     * box overlaps the rectangle; bodies outside are frozen and cost nothing: they are not
-     * integrated, not moved in the broadphase, not collided with each other or the landscape and
+     * Restricts the simulation to a rectangle. A dynamic or kinematic body counts as inside when
+     * its bounding box overlaps the rectangle; bodies outside are frozen and cost nothing: they are
+     * not integrated, not moved in the broadphase, not collided with each other or the landscape and
      * not solved. Bodies inside still collide with frozen bodies, which stand still like static
      * ones, so nothing falls into a body beyond the edge. A frozen body keeps its velocity and
-     * moves on when the area, which may be moved between any two ticks, takes it in again.
-     * Constraints between a body inside and a frozen one hold the frozen one fixed.
+     * moves on when the area, which may be moved between any two ticks, takes it in again: a
+     * kinematic platform that leaves the area stops just past its edge, as a dynamic body does, and
+     * goes on when the area reaches it. Constraints between a body inside and a frozen one hold the
+     * frozen one fixed.
      *
      * @param minX the left edge (px)
      * @param minY the top edge (px)
@@ -498,8 +501,8 @@ public abstract class Simulation {
     }
 
     /**
-     * The number of dynamic bodies the last tick simulated: all of them without a simulation area,
-     * those inside it with one.
+     * The number of dynamic and kinematic bodies the last tick simulated: all of them without a
+     * simulation area, those inside it with one.
      *
      * @return the count
      */
@@ -594,6 +597,61 @@ public abstract class Simulation {
      */
     public boolean isCollisionDisabled(Body a, Body b) {
         return a != null && b != null && a.excludes(b);
+    }
+
+    /**
+     * Sets the application's collision filter, asked about pairs the built-in rules let collide
+     * (see {@link CollisionFilter} for when, and what it may do). Every pair is asked again: contacts
+     * the new filter refuses end at the next tick, and pairs the old one refused may then begin.
+     * Not during a tick's pair search or solve (from the filter itself or a constraint).
+     *
+     * <pre>{@code
+     * world.setCollisionFilter(new CollisionFilter() {
+     *     public boolean shouldCollide(Body a, Body b) {
+     *         // ghosts pass through everything but the walls (static bodies)
+     *         return !(a.getUserData() instanceof Ghost && b.isDynamic()
+     *             || b.getUserData() instanceof Ghost && a.isDynamic());
+     *     }
+     * });
+     * }</pre>
+     *
+     * @param filter the filter, or null for the built-in rules alone (the default)
+     */
+    public void setCollisionFilter(CollisionFilter filter) {
+        collisionFilter = filter;
+        Body[] all = bodies.ordered();
+        for (int i = 0, n = bodies.count(); i < n; i++) {
+            proxies.filterChanged(all[i]);
+        }
+    }
+
+    /**
+     * The application's collision filter.
+     *
+     * @return the filter, or null when none is set
+     */
+    public CollisionFilter getCollisionFilter() {
+        return collisionFilter;
+    }
+
+    /**
+     * Asks the collision rules, the application's {@link CollisionFilter} included, again about
+     * every pair of a body at the next tick, as a change of its layers or filter bits does: for when
+     * the filter's answer for it changed.
+     *
+     * @param body a body of this world
+     */
+    public void refilter(Body body) {
+        Check.notNull("World.refilter", "body", body);
+        if (body.world != this) {
+            throw new IllegalArgumentException("World.refilter: " + body + " is not in this world");
+        }
+        proxies.filterChanged(body);
+    }
+
+    /** The built-in rules, then the application's filter: whether two bodies may collide. */
+    boolean shouldCollide(Body a, Body b) {
+        return ContactManager.shouldCollide(a, b) && (collisionFilter == null || collisionFilter.shouldCollide(a, b));
     }
 
     private void collisionFilterChanged(Body a, Body b) {

@@ -7,8 +7,8 @@ import org.emini.internal.HeapSort;
 /**
  * The world's simulation area and the bodies it simulates this tick.
  *
- * <p>Without an area every dynamic body is simulated. With one, the simulated bodies are the
- * dynamic bodies whose bounding box overlaps the area, found by querying the broadphase with the
+ * <p>Without an area every dynamic and kinematic body is simulated. With one, the simulated bodies
+ * are the dynamic and kinematic bodies whose bounding box overlaps the area, found by querying the broadphase with the
  * area, so the cost follows the bodies inside rather than all bodies. The others are frozen: not
  * integrated, not moved in the broadphase, not collided with each other or the landscape, and
  * seen by the solver as static (index 0), so bodies inside rest on them rather than fall into them.
@@ -83,7 +83,7 @@ final class SimulationArea implements QueryCallback {
         if (!bounded) {
             ensure(allCount);
             for (int i = 0; i < allCount; i++) {
-                if (all[i].isDynamic() && !all[i].sleeping) {
+                if (!all[i].isStatic() && !all[i].sleeping) {
                     bodies[count++] = all[i];
                 }
             }
@@ -132,7 +132,7 @@ final class SimulationArea implements QueryCallback {
     @Override
     public boolean reportProxy(int proxyId) {
         Body b = world.bodyInSlot(broadPhase.getUserData(proxyId));
-        if (b == null || !b.isDynamic() || b.sleeping) {
+        if (b == null || b.isStatic() || b.sleeping) {
             return true;
         }
         // The fat box overlaps; the body counts as inside when its own box does.

@@ -7,7 +7,10 @@ import org.emini.math.EMath;
  *
  * <p>Each body occupies {@link #STRIDE} consecutive floats so a contact touches two short runs of
  * memory. Slot 0 is the shared "static" slot: zero velocity and inverse mass, identity motion; every
- * static or frozen body maps to it, which keeps the solver loops free of branches.
+ * static or frozen body maps to it, which keeps the solver loops free of branches. A kinematic body
+ * has a slot of its own with zero inverse mass and inertia and no acceleration: impulses leave its
+ * velocity as the application set it, and it moves by that velocity. Only kinematic bodies and the
+ * static slot have a zero inverse mass (a shape's mass is finite and positive).
  */
 final class SolverBodies {
     static final int STRIDE = 16;
@@ -37,6 +40,8 @@ final class SolverBodies {
     float[] state = new float[8 * STRIDE];
     Body[] bodies = new Body[8];
     int count;
+    // The kinematic bodies among them: the fast-body sweep then looks at moving bodies too.
+    int kinematicCount;
 
     /** Starts a tick: only the static slot remains. */
     void reset(int capacity) {
@@ -56,12 +61,16 @@ final class SolverBodies {
         alpha[0] = 0f;
         bodies[0] = null;
         count = 1;
+        kinematicCount = 0;
     }
 
-    /** Copies a dynamic body in, with the forces applied for this tick; returns its slot. */
+    /** Copies a dynamic or kinematic body in, with the forces applied for this tick; returns its slot. */
     int add(Body b, float gravityX, float gravityY, long tick) {
         int slot = count++;
         bodies[slot] = b;
+        if (b.isKinematic()) {
+            kinematicCount++;
+        }
         float[] st = state;
         int o = slot * STRIDE;
         copyMotion(b, slot, gravityX, gravityY, tick);
@@ -118,9 +127,11 @@ final class SolverBodies {
         st[o + W] = b.w;
         st[o + IM] = im;
         st[o + II] = ii;
-        float g = b.isAffectedByGravity() ? 1f : 0f;
+        // Neither gravity nor forces move a kinematic body.
+        boolean kinematic = b.isKinematic();
+        float g = b.isAffectedByGravity() && !kinematic ? 1f : 0f;
         // Forces left from a tick that did not simulate the body (it was frozen) do not count.
-        float f = b.forceTick == tick ? 1f : 0f;
+        float f = b.forceTick == tick && !kinematic ? 1f : 0f;
         st[o + AX] = g * gravityX + f * im * b.forceX;
         st[o + AY] = g * gravityY + f * im * b.forceY;
         alpha[slot] = f * ii * b.torque;
@@ -179,10 +190,6 @@ final class SolverBodies {
         st[i + 1] = ns * inv;
     }
 
-    /**
-     * Copies the state back to the bodies, applies the world's per-tick damping and clears the
-     * forces. Returns the first body that became non-finite, or null.
-     */
     /** A body's state in this tick's solve, for error messages. */
     String describe(Body b) {
         int o = b.solverIndex * STRIDE;
@@ -190,11 +197,19 @@ final class SolverBodies {
             + state[o + VX] + ", " + state[o + VY] + "), angular velocity " + state[o + W];
     }
 
-    Body writeBack(float linearKeep, float angularKeep) {
+    /**
+     * Copies the state back to the bodies, applies the world's per-tick damping (not to kinematic
+     * bodies, which keep the velocity set) and clears the forces. Returns the first body that
+     * became non-finite, or null.
+     */
+    Body writeBack(float linearDamped, float angularDamped) {
         float[] st = state;
         Body bad = null;
         for (int i = 1, o = STRIDE; i < count; i++, o += STRIDE) {
             Body b = bodies[i];
+            boolean kinematic = b.isKinematic();
+            float linearKeep = kinematic ? 1f : linearDamped;
+            float angularKeep = kinematic ? 1f : angularDamped;
             b.x = st[o + X];
             b.y = st[o + Y];
             b.c = st[o + C];

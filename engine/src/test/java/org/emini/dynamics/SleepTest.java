@@ -179,4 +179,30 @@ class SleepTest {
             assertEquals(one[0][i].isSleeping(), two[0][i].isSleeping());
         }
     }
+
+    @Test
+    void aMovingKinematicPlatformKeepsItsLoadAwakeAndStartingItWakesThem() {
+        World world = new World();
+        world.setTicksPerSecond(60);
+        world.setSleepingEnabled(true);
+        Body platform = new Body(0f, 0f, Shape.createRectangle(200f, 10f), false);
+        platform.setKinematic(true);
+        world.addBody(platform);
+        Body box = new Body(0f, -15f, Shape.createRectangle(20f, 20f), true);
+        world.addBody(box);
+        platform.setVelocity(20f, 0f);
+        Scenes.run(world, 3f);
+        assertFalse(box.isSleeping(), "carried, it moves with the platform");
+        assertFalse(platform.isSleeping());
+        platform.setVelocity(0f, 0f);
+        // The box slides on (friction 0.25 × 0.25 stops 20 px/s in 3.2 s), then both rest as one island.
+        Scenes.run(world, 5f);
+        assertTrue(box.isSleeping() && platform.isSleeping(), "both rest, as one island");
+        platform.setVelocity(-20f, 0f);
+        assertFalse(box.isSleeping(), "starting the platform wakes its load");
+        float x = box.getX();
+        // Friction takes it up to the platform's speed in 3.2 s (32 px), then it rides along.
+        Scenes.run(world, 4f);
+        assertTrue(box.getX() < x - 40f, "and carries it again: moved " + (box.getX() - x));
+    }
 }

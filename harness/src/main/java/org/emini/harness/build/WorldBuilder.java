@@ -91,13 +91,19 @@ public final class WorldBuilder {
         // A written body's values have their own keys; a generated body's come from its generator.
         boolean written = spec.path().parent().elements().equals(List.of("bodies"));
         Body body = Located.at(written ? spec.path().key("position") : spec.path(),
-                () -> new Body((float) spec.x(), (float) spec.y(), shape, !s.isStatic()));
+                () -> new Body((float) spec.x(), (float) spec.y(), shape, !s.isStatic() && !s.kinematic()));
+        if (s.kinematic()) {
+            body.setKinematic(true);
+        }
         body.setRotatable(s.rotatable());
         body.setInteracting(s.interacting());
         body.setGravityAffected(s.gravity());
         for (int layer : s.layers()) {
             Located.at(key(spec, written, "layers"), () -> body.addCollisionLayer(layer));
         }
+        body.setCategoryBits(s.categoryBits());
+        body.setMaskBits(s.maskBits());
+        body.setGroupIndex(s.group());
         Located.at(key(spec, written, "angle"), () -> body.setAngle((float) s.angle()));
         Located.at(key(spec, written, "velocity"), () -> body.setVelocity((float) s.vx(), (float) s.vy()));
         Located.at(key(spec, written, "angularVelocity"), () -> body.setAngularVelocity((float) s.angularVelocity()));

@@ -77,6 +77,14 @@ final class ExpandCommand implements Callable<Integer> {
             json.name("name").value(b.name());
             json.name("position").beginArray().value(b.x()).value(b.y()).endArray();
             json.name("static").value(st.isStatic());
+            if (st.kinematic()) {
+                json.name("kinematic").value(true);
+            }
+            if (!st.defaultFilter()) {
+                bitList(json.name("categories"), st.categoryBits());
+                bitList(json.name("mask"), st.maskBits());
+                json.name("group").value(st.group());
+            }
             json.name("angle").value(st.angle());
             json.name("velocity").beginArray().value(st.vx()).value(st.vy()).endArray();
             json.name("angularVelocity").value(st.angularVelocity());
@@ -94,6 +102,17 @@ final class ExpandCommand implements Callable<Integer> {
         }
         json.endArray();
         json.endObject();
+    }
+
+    /** A bit set as the list of its bit numbers, as the scene format writes layers, categories and masks. */
+    private static void bitList(JsonWriter json, int bits) throws IOException {
+        json.beginArray();
+        for (int k = 0; k < 32; k++) {
+            if ((bits >>> k & 1) != 0) {
+                json.value(k);
+            }
+        }
+        json.endArray();
     }
 
     private static void shape(JsonWriter json, ShapeSpec s) throws IOException {

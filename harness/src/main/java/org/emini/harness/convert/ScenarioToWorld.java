@@ -248,6 +248,12 @@ public final class ScenarioToWorld {
 
     private void body(BodySpec spec) {
         BodyState s = spec.state();
+        if (s.kinematic()) {
+            throw new Skip("a kinematic body (the original has static and dynamic bodies only)");
+        }
+        if (!s.defaultFilter()) {
+            throw new Skip("categories, mask or group (the original has layers only)");
+        }
         PhyBody b = new PhyBody();
         b.setShapeIndex(shape(spec.shape()));
         b.setPosition(vec(spec.x(), spec.y()));

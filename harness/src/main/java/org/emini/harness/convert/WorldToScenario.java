@@ -292,10 +292,12 @@ public final class WorldToScenario {
         if (b.getAngleRaw() != 0) {
             s.append(", angle: ").append(num(fx2(PhyFixed.wrapAngle2fx(b.getAngleRaw()))));
         }
-        if (!b.getVelocity().equals(PhyVector.ZERO)) {
+        // The original ignores motion stored on a static body (as the engine's loader does); the scene
+        // format refuses it.
+        if (b.isDynamic() && !b.getVelocity().equals(PhyVector.ZERO)) {
             s.append(", velocity: ").append(vecFx(b.getVelocity()));
         }
-        if (b.getAngularVelocityRaw() != 0) {
+        if (b.isDynamic() && b.getAngularVelocityRaw() != 0) {
             s.append(", angularVelocity: ").append(num(-fx2(b.getAngularVelocityRaw())));
         }
         if (!b.canRotate()) {

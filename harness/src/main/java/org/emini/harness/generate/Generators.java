@@ -116,8 +116,7 @@ public final class Generators {
             BodyState state = g.template();
             if (g.randomAngle()) {
                 double a = random.nextDouble() * 2 * Math.PI;
-                state = new BodyState(state.isStatic(), a, state.vx(), state.vy(), state.angularVelocity(),
-                        state.rotatable(), state.interacting(), state.gravity(), state.layers());
+                state = state.withAngle(a);
             }
             out.add(body(g, i, shape, x, y, state));
         }

@@ -115,6 +115,7 @@ final class ScenarioReader {
             }
         }
         List<ActionSpec> actions = actions(root.get("actions"), r.key("actions"), names, emitters);
+        staticVelocities(actions, bodies);
         JsonNode worldNode = root.get("world");
         if (worldNode != null && worldNode.has("simulationArea")) {
             elements.put("world.simulationArea", new Section(worldNode.get("simulationArea"),
@@ -245,9 +246,32 @@ final class ScenarioReader {
         if (b.has("layers")) {
             b.get("layers").forEach(l -> layers.add(l.asInt()));
         }
-        return new BodyState(bool(b, "static", false), angle, v[0], v[1], num(b, "angularVelocity", 0),
+        boolean isStatic = bool(b, "static", false);
+        boolean kinematic = bool(b, "kinematic", false);
+        double omega = num(b, "angularVelocity", 0);
+        if (isStatic && kinematic) {
+            problem(p.key("kinematic"), "a body is static or kinematic, not both");
+        } else if (isStatic && (v[0] != 0 || v[1] != 0)) {
+            problem(p.key("velocity"), "a static body does not move; give kinematic: true to move it by its velocity");
+        } else if (isStatic && omega != 0) {
+            problem(p.key("angularVelocity"), "a static body does not turn; give kinematic: true to turn it");
+        }
+        return new BodyState(isStatic, kinematic, angle, v[0], v[1], omega,
                 bool(b, "rotatable", true), bool(b, "interacting", true), bool(b, "gravity", true),
-                List.copyOf(layers));
+                List.copyOf(layers), bits(b, "categories", BodyState.DEFAULT_CATEGORY_BITS),
+                bits(b, "mask", BodyState.DEFAULT_MASK_BITS), b.has("group") ? b.get("group").asInt() : 0);
+    }
+
+    /** A list of bit numbers (0..31) as a bit set, or the default when absent. */
+    private static int bits(JsonNode b, String key, int absent) {
+        if (!b.has(key)) {
+            return absent;
+        }
+        int bits = 0;
+        for (JsonNode k : b.get(key)) {
+            bits |= 1 << k.asInt();
+        }
+        return bits;
     }
 
     private GeneratorSpec generator(JsonNode g, JsonPath p) {
@@ -281,6 +305,24 @@ final class ScenarioReader {
                 region != null ? vec(region.get("max"), 0, 0) : null,
                 g.has("seed") ? g.get("seed").asLong() : 0, bool(g, "randomAngle", false),
                 state(g.get("body"), p.key("body")), p);
+    }
+
+    /** A velocity action that would move a static body: the engine refuses it, so the scene is refused. */
+    private void staticVelocities(List<ActionSpec> actions, List<BodySpec> bodies) {
+        Set<String> still = new HashSet<>();
+        for (BodySpec b : bodies) {
+            if (b.state().isStatic()) {
+                still.add(b.name());
+            }
+        }
+        for (ActionSpec a : actions) {
+            boolean moves = a.vector() != null && (a.vector()[0] != 0 || a.vector()[1] != 0)
+                    || !Double.isNaN(a.value()) && a.value() != 0;
+            if (a.kind() == ActionSpec.Kind.velocity && moves && still.contains(a.body())) {
+                problem(a.path(), "body '" + a.body() + "' is static: it does not move; give it kinematic: true to move"
+                        + " it by a velocity");
+            }
+        }
     }
 
     private List<ActionSpec> actions(JsonNode list, JsonPath p, Set<String> names, Set<String> emitters) {
