@@ -1,0 +1,18 @@
+package org.emini.dynamics;
+
+/**
+ * Chooses what a closest-hit cast ({@link Simulation#rayCastClosest},
+ * {@link Simulation#castShapeClosest}) or {@link Simulation#findBodyAt} may find. To skip the bodies
+ * that share a collision layer bit with {@code bits}, as the engine's collisions do:
+ * {@code (body, segment) -> body == null || (body.getCollisionLayers() & bits) == 0}.
+ */
+public interface QueryFilter {
+    /**
+     * Whether a body, or a landscape segment, may be found.
+     *
+     * @param body the body, or null for a landscape segment
+     * @param segment the segment's index in the world's {@link Landscape}, or −1 for a body
+     * @return true to test it, false to look through it
+     */
+    boolean accepts(Body body, int segment);
+}
