@@ -2,6 +2,7 @@ package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
 import org.emini.collision.QueryCallback;
+import org.emini.collision.SweptBox;
 import org.emini.internal.HeapSort;
 
 /**
@@ -24,11 +25,9 @@ final class BodyQuery implements QueryCallback {
     private float minY;
     private float maxX;
     private float maxY;
-    // The sweep: the rectangle moves by (dx, dy); boxes are grown by pad against rounding.
+    // The sweep, when the rectangle moves (the world's casts).
+    private final SweptBox sweep = new SweptBox();
     private boolean swept;
-    private float dx;
-    private float dy;
-    private float pad;
 
     void run(Simulation w, BroadPhase bp, SimulationArea area, Body[] dirty, int dirtyCount, float minX, float minY,
             float maxX, float maxY, QueryCallback out) {
@@ -45,11 +44,8 @@ final class BodyQuery implements QueryCallback {
         this.minY = minY;
         this.maxX = maxX;
         this.maxY = maxY;
-        this.dx = dx;
-        this.dy = dy;
         swept = dx != 0f || dy != 0f;
-        pad = swept ? 1e-6f * (Math.abs(minX) + Math.abs(minY) + Math.abs(maxX) + Math.abs(maxY) + Math.abs(dx)
-            + Math.abs(dy)) : 0f;
+        sweep.set(minX, minY, maxX, maxY, dx, dy);
         count = 0;
         for (int i = 0; i < area.count; i++) {
             Body b = area.bodies[i];
@@ -65,8 +61,11 @@ final class BodyQuery implements QueryCallback {
         }
         world = w;
         broadPhase = bp;
-        bp.query(Math.min(minX, minX + dx) - pad, Math.min(minY, minY + dy) - pad, Math.max(maxX, maxX + dx) + pad,
-            Math.max(maxY, maxY + dy) + pad, this);
+        if (swept) {
+            bp.querySwept(sweep, this);
+        } else {
+            bp.query(minX, minY, maxX, maxY, this);
+        }
         world = null;
         broadPhase = null;
         // World order, each body once (a body re-added to the world may be listed dirty twice).
@@ -89,44 +88,11 @@ final class BodyQuery implements QueryCallback {
 
     private void test(Body b) {
         b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-        if (swept ? sweepMeets(box) : box[0] <= maxX && minX <= box[2] && box[1] <= maxY && minY <= box[3]) {
+        if (swept ? sweep.meets(box[0], box[1], box[2], box[3]) : box[0] <= maxX && minX <= box[2] && box[1] <= maxY && minY <= box[3]) {
             if (count == found.length) {
                 found = java.util.Arrays.copyOf(found, 2 * count);
             }
             found[count++] = b.worldIndex;
         }
-    }
-
-    /** Whether the rectangle, moved by t·(dx, dy) for some t in [0, 1], meets the (padded) box. */
-    private boolean sweepMeets(float[] b) {
-        float lo = 0f;
-        float hi = 1f;
-        // Per axis, the t where [min + t·d, max + t·d] overlaps [b0 − pad, b1 + pad].
-        for (int axis = 0; axis < 2; axis++) {
-            float qMin = axis == 0 ? minX : minY;
-            float qMax = axis == 0 ? maxX : maxY;
-            float d = axis == 0 ? dx : dy;
-            float bMin = b[axis] - pad;
-            float bMax = b[axis + 2] + pad;
-            if (d == 0f) {
-                if (qMin > bMax || bMin > qMax) {
-                    return false;
-                }
-                continue;
-            }
-            float enter = (bMin - qMax) / d;
-            float leave = (bMax - qMin) / d;
-            if (d < 0f) {
-                float swap = enter;
-                enter = leave;
-                leave = swap;
-            }
-            lo = Math.max(lo, enter);
-            hi = Math.min(hi, leave);
-            if (lo > hi) {
-                return false;
-            }
-        }
-        return true;
     }
 }

@@ -4,6 +4,7 @@ import org.emini.collision.IndexList;
 import org.emini.collision.QueryCallback;
 import org.emini.collision.RayCaster;
 import org.emini.collision.ShapeCaster;
+import org.emini.collision.SweptBox;
 import org.emini.internal.HeapSort;
 import org.emini.shape.Circle;
 import org.emini.shape.MultiShape;
@@ -31,6 +32,7 @@ final class WorldQuery {
     private final IndexList bodies = new IndexList();
     private final IndexList segments = new IndexList();
     private final float[] box = new float[4];
+    private final SweptBox sweep = new SweptBox();
     private long[] order = new long[16];
     private String running;
 
@@ -76,7 +78,7 @@ final class WorldQuery {
             }
         }
         Landscape land = world.getLandscape();
-        int n = gatherSegments(land, Math.min(x1, x2), Math.min(y1, y2), Math.max(x1, x2), Math.max(y1, y2));
+        int n = gatherSegments(land, sweep.set(x1, y1, x1, y1, dx, dy));
         for (int k = 0; k < n; k++) {
             int seg = (int) order[k];
             if (filter != null && !filter.accepts(null, seg)) {
@@ -120,7 +122,7 @@ final class WorldQuery {
             }
         }
         Landscape land = world.getLandscape();
-        int n = gatherSegments(land, Math.min(x1, x2), Math.min(y1, y2), Math.max(x1, x2), Math.max(y1, y2));
+        int n = gatherSegments(land, sweep.set(x1, y1, x1, y1, dx, dy));
         for (int k = 0; k < n; k++) {
             int seg = (int) order[k];
             if (raySegment(land, seg, x1, y1, x2, y2) && ray.t <= end) {
@@ -199,8 +201,7 @@ final class WorldQuery {
             }
         }
         Landscape land = world.getLandscape();
-        int n = gatherSegments(land, Math.min(box[0], box[0] + dx), Math.min(box[1], box[1] + dy),
-            Math.max(box[2], box[2] + dx), Math.max(box[3], box[3] + dy));
+        int n = gatherSegments(land, sweep.set(box[0], box[1], box[2], box[3], dx, dy));
         for (int k = 0; k < n; k++) {
             int seg = (int) order[k];
             if (filter != null && !filter.accepts(null, seg)) {
@@ -216,10 +217,6 @@ final class WorldQuery {
 
     void castShape(Shape shape, float x, float y, float c, float s, float dx, float dy, CastCallback callback) {
         shape.computeAabb(x, y, c, s, box);
-        float minX = Math.min(box[0], box[0] + dx);
-        float minY = Math.min(box[1], box[1] + dy);
-        float maxX = Math.max(box[2], box[2] + dx);
-        float maxY = Math.max(box[3], box[3] + dy);
         world.findBodies(finder, box[0], box[1], box[2], box[3], dx, dy, fresh(bodies));
         float end = 1f;
         for (int k = 0, n = bodies.count(); k < n; k++) {
@@ -236,7 +233,7 @@ final class WorldQuery {
             }
         }
         Landscape land = world.getLandscape();
-        int n = gatherSegments(land, minX, minY, maxX, maxY);
+        int n = gatherSegments(land, sweep.set(box[0], box[1], box[2], box[3], dx, dy));
         for (int k = 0; k < n; k++) {
             int seg = (int) order[k];
             if (castSegment(land, seg, shape, x, y, c, s, dx, dy) && caster.t <= end) {
@@ -299,7 +296,7 @@ final class WorldQuery {
             QueryCallback callback) {
         shape.computeAabb(x, y, c, s, box);
         Landscape land = world.getLandscape();
-        int n = gatherSegments(land, box[0], box[1], box[2], box[3]);
+        int n = gatherSegments(land, sweep.set(box[0], box[1], box[2], box[3], 0f, 0f));
         for (int k = 0; k < n; k++) {
             int seg = (int) order[k];
             if (caster.castSegment(shape, x, y, c, s, 0f, 0f, land.getStartX(seg), land.getStartY(seg),
@@ -311,12 +308,12 @@ final class WorldQuery {
 
     // ---------------------------------------------------------------------------------------------
 
-    /** The segments whose boxes overlap a box, in index order, into order[0..n). */
-    private int gatherSegments(Landscape land, float minX, float minY, float maxX, float maxY) {
+    /** The segments whose boxes the sweep meets, in index order, into order[0..n). */
+    private int gatherSegments(Landscape land, SweptBox swept) {
         if (land.getSegmentCount() == 0) {
             return 0;
         }
-        land.querySegments(minX, minY, maxX, maxY, fresh(segments));
+        land.querySegments(swept, fresh(segments));
         int n = segments.count();
         if (order.length < n) {
             order = new long[Math.max(n, 2 * order.length)];
