@@ -2,8 +2,9 @@ package org.emini.dynamics;
 
 /**
  * Chooses what a closest-hit cast ({@link Simulation#rayCastClosest},
- * {@link Simulation#castShapeClosest}) or {@link Simulation#findBodyAt} may find. To skip the bodies
- * that share a collision layer bit with {@code bits}, as the engine's collisions do:
+ * {@link Simulation#castShapeClosest}) may find; the all-hit casts filter in their
+ * {@link CastCallback} (−1 ignores a hit), the point and overlap queries in their callbacks. To
+ * skip the bodies that share a collision layer bit with {@code bits}, as the engine's collisions do:
  * {@code (body, segment) -> body == null || (body.getCollisionLayers() & bits) == 0}.
  */
 public interface QueryFilter {
