@@ -470,6 +470,29 @@ public final class BroadPhase {
         queryTree(DYNAMIC_TREE, minX, minY, maxX, maxY, callback);
     }
 
+    /**
+     * Like {@link #query}, for a box swept along a translation (a ray: a point swept): reports the
+     * proxies whose fat AABB the sweep meets, walking only the parts of the trees it passes
+     * through, so a long diagonal ray costs in proportion to what lies along it.
+     *
+     * @param sweep the swept box
+     * @param callback receives the proxy ids; it must not modify this broadphase but may query it
+     * @throws IllegalArgumentException if sweep or callback is null
+     */
+    public void querySwept(SweptBox sweep, QueryCallback callback) {
+        if (sweep == null || callback == null) {
+            throw new IllegalArgumentException("querySwept: " + (sweep == null ? "sweep" : "callback") + " is null");
+        }
+        lockDepth++;
+        try {
+            if (trees[STATIC_TREE].querySwept(sweep, callback)) {
+                trees[DYNAMIC_TREE].querySwept(sweep, callback);
+            }
+        } finally {
+            lockDepth--;
+        }
+    }
+
     /** Queries one tree; returns false if the callback stopped the query. */
     private boolean queryTree(
             int tree, float minX, float minY, float maxX, float maxY, QueryCallback callback) {

@@ -158,6 +158,37 @@ final class DynamicTree {
         return true;
     }
 
+    /**
+     * Like {@link #query}, for a box swept along a translation: reports the item of every leaf
+     * whose box the sweep meets, pruning the subtrees it misses.
+     *
+     * @return false if the callback stopped the query
+     */
+    boolean querySwept(SweptBox sweep, QueryCallback callback) {
+        if (root == NULL) {
+            return true;
+        }
+        int base = stackTop;
+        try {
+            push(root);
+            while (stackTop > base) {
+                int node = stack[--stackTop];
+                if (!sweep.meets(nodeMinX[node], nodeMinY[node], nodeMaxX[node], nodeMaxY[node])) {
+                    continue;
+                }
+                if (nodeHeight[node] > 0) {
+                    push(nodeChild1[node]);
+                    push(nodeChild2[node]);
+                } else if (!callback.reportProxy(nodeItem[node])) {
+                    return false;
+                }
+            }
+        } finally {
+            stackTop = base;
+        }
+        return true;
+    }
+
     private void push(int node) {
         if (stackTop == stack.length) {
             stack = Arrays.copyOf(stack, stackTop * 2);

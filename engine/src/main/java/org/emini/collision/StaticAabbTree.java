@@ -235,6 +235,42 @@ public final class StaticAabbTree {
     }
 
     /**
+     * Like {@link #query}, for a box swept along a translation: reports the id of every item whose
+     * box the sweep meets, pruning the subtrees it misses, until the callback returns false.
+     *
+     * @param sweep the swept box
+     * @param callback receives the ids; it must not rebuild or query this tree
+     * @return false if the callback stopped the query
+     */
+    public boolean querySwept(SweptBox sweep, QueryCallback callback) {
+        if (nodeCount == 0) {
+            return true;
+        }
+        int[] st = stack;
+        int top = 0;
+        st[top++] = 0;
+        while (top > 0) {
+            int node = st[--top];
+            if (!sweep.meets(nodeMinX[node], nodeMinY[node], nodeMaxX[node], nodeMaxY[node])) {
+                continue;
+            }
+            int n = nodeItems[node];
+            if (n == 0) {
+                st[top++] = nodeIndex[node];
+                st[top++] = node + 1;
+                continue;
+            }
+            for (int i = nodeIndex[node], end = i + n; i < end; i++) {
+                if (sweep.meets(itemMinX[i], itemMinY[i], itemMaxX[i], itemMaxY[i])
+                        && !callback.reportProxy(itemId[i])) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /**
      * The number of items.
      *
      * @return the count given to the last build

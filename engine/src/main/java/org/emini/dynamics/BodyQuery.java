@@ -2,10 +2,13 @@ package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
 import org.emini.collision.QueryCallback;
+import org.emini.collision.SweptBox;
 import org.emini.internal.HeapSort;
 
 /**
- * {@link Simulation#queryBodies}: the bodies whose current box overlaps a rectangle, in world order.
+ * {@link Simulation#queryBodies}: the bodies whose current box overlaps a rectangle, in world order;
+ * for the world's casts ({@code WorldQuery}), the bodies whose box a rectangle meets as it is swept
+ * along a translation (a ray: a point swept).
  *
  * <p>The last tick's simulated bodies are tested one by one (the solver moved them after their
  * broadphase boxes were last fitted), the bodies the application moved since are tested from the
@@ -22,13 +25,27 @@ final class BodyQuery implements QueryCallback {
     private float minY;
     private float maxX;
     private float maxY;
+    // The sweep, when the rectangle moves (the world's casts).
+    private final SweptBox sweep = new SweptBox();
+    private boolean swept;
 
     void run(Simulation w, BroadPhase bp, SimulationArea area, Body[] dirty, int dirtyCount, float minX, float minY,
             float maxX, float maxY, QueryCallback out) {
+        runSwept(w, bp, area, dirty, dirtyCount, minX, minY, maxX, maxY, 0f, 0f, out);
+    }
+
+    /**
+     * Like {@link #run}, for a rectangle swept by (dx, dy): the bodies whose box it meets on the way
+     * (a superset by a few float roundings, so that no body an exact test would hit is left out).
+     */
+    void runSwept(Simulation w, BroadPhase bp, SimulationArea area, Body[] dirty, int dirtyCount, float minX,
+            float minY, float maxX, float maxY, float dx, float dy, QueryCallback out) {
         this.minX = minX;
         this.minY = minY;
         this.maxX = maxX;
         this.maxY = maxY;
+        swept = dx != 0f || dy != 0f;
+        sweep.set(minX, minY, maxX, maxY, dx, dy);
         count = 0;
         for (int i = 0; i < area.count; i++) {
             Body b = area.bodies[i];
@@ -44,7 +61,11 @@ final class BodyQuery implements QueryCallback {
         }
         world = w;
         broadPhase = bp;
-        bp.query(minX, minY, maxX, maxY, this);
+        if (swept) {
+            bp.querySwept(sweep, this);
+        } else {
+            bp.query(minX, minY, maxX, maxY, this);
+        }
         world = null;
         broadPhase = null;
         // World order, each body once (a body re-added to the world may be listed dirty twice).
@@ -67,7 +88,7 @@ final class BodyQuery implements QueryCallback {
 
     private void test(Body b) {
         b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-        if (box[0] <= maxX && minX <= box[2] && box[1] <= maxY && minY <= box[3]) {
+        if (swept ? sweep.meets(box[0], box[1], box[2], box[3]) : box[0] <= maxX && minX <= box[2] && box[1] <= maxY && minY <= box[3]) {
             if (count == found.length) {
                 found = java.util.Arrays.copyOf(found, 2 * count);
             }

@@ -4,6 +4,7 @@ import java.util.Arrays;
 import org.emini.collision.QueryCallback;
 import org.emini.collision.Segment;
 import org.emini.collision.StaticAabbTree;
+import org.emini.collision.SweptBox;
 import org.emini.internal.Check;
 import org.emini.math.EMath;
 
@@ -342,6 +343,28 @@ public final class Landscape {
         prepare();
         indices.forward = callback;
         query(minX, minY, maxX, maxY, indices);
+        indices.forward = null;
+    }
+
+    /**
+     * Like {@link #querySegments(float, float, float, float, QueryCallback)}, for a box swept along
+     * a translation (the world's ray and shape casts): the segments whose box the sweep meets,
+     * walking only the part of the index it passes through.
+     */
+    void querySegments(SweptBox sweep, QueryCallback callback) {
+        prepare();
+        indices.forward = callback;
+        live.forward = indices;
+        live.stopped = false;
+        tree.querySwept(sweep, live);
+        live.forward = null;
+        for (int i = 0; i < recentCount && !live.stopped; i++) {
+            int s = recent[i];
+            if (stamp[s] != 0 && sweep.meets(Math.min(x1[s], x2[s]), Math.min(y1[s], y2[s]), Math.max(x1[s], x2[s]),
+                    Math.max(y1[s], y2[s])) && !indices.reportProxy(s)) {
+                break;
+            }
+        }
         indices.forward = null;
     }
 

@@ -5,6 +5,8 @@ import org.emini.collision.QueryCallback;
 import org.emini.internal.ChangeQueue;
 import org.emini.internal.Check;
 import org.emini.internal.ElementList;
+import org.emini.math.EMath;
+import org.emini.shape.Shape;
 
 /**
  * The physics of a world: bodies, constraints, contacts, the landscape, the simulation area, and
@@ -89,6 +91,7 @@ public abstract class Simulation {
     private Landscape landscape = new Landscape();
     private final SimulationArea area = new SimulationArea();
     private final BodyQuery bodyQuery = new BodyQuery();
+    private final WorldQuery worldQuery = new WorldQuery(this);
     final StepData stepData = new StepData();
     private PreSolveListener preSolve;
     private final SensorSet sensors = new SensorSet();
@@ -542,6 +545,276 @@ public abstract class Simulation {
         // Results come in world order, by index.
         bodies.closeHoles();
         bodyQuery.run(this, broadPhase, area, proxies.dirty, proxies.dirtyCount, minX, minY, maxX, maxY, callback);
+    }
+
+    /** Runs a body query (a box, or a box swept by (dx, dy)) over the world's bodies as they are now. */
+    void findBodies(BodyQuery query, float minX, float minY, float maxX, float maxY, float dx, float dy,
+            QueryCallback out) {
+        bodies.closeHoles();
+        query.runSwept(this, broadPhase, area, proxies.dirty, proxies.dirtyCount, minX, minY, maxX, maxY, dx, dy, out);
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Queries: rays, swept shapes, points and overlaps
+
+    /**
+     * Casts a ray from (x1, y1) to (x2, y2) and finds the first thing it hits: a body (any kind:
+     * static, dynamic, frozen outside the simulation area; where it is now, also when moved since
+     * the last tick) or a landscape segment. Shapes are solid and closed: a ray that starts inside
+     * or on a body hits it at fraction 0, the point and normal then giving the shortest way out (the
+     * nearest point of its surface; a filter can look through the body a ray starts from); a
+     * tangent hits. A zero-length ray is a point test.
+     * A landscape segment is hit from either side, a faced one only by rays that start on its
+     * blocking side (as it stops only bodies there); a ray starting on a segment's line or running
+     * along it does not hit it. Ties go to the body first in world order, bodies before segments.
+     * Costs as {@link #queryBodies} does for the ray's box, and allocates nothing.
+     *
+     * @param x1 the ray's start x (px)
+     * @param y1 the ray's start y (px)
+     * @param x2 the ray's end x (px)
+     * @param y2 the ray's end y (px)
+     * @param filter which bodies and segments may be hit, or null for all
+     * @param out receives the closest hit, or is cleared when there is none
+     * @return whether something was hit
+     * @throws IllegalArgumentException naming the call and value when a coordinate is NaN or
+     *     infinite, the ray is longer than a float holds, or out is null
+     * @throws IllegalStateException when called from the callback or filter of a running query
+     */
+    public boolean rayCastClosest(float x1, float y1, float x2, float y2, QueryFilter filter, CastHit out) {
+        String where = "World.rayCastClosest";
+        checkRay(where, x1, y1, x2, y2);
+        Check.notNull(where, "out", out);
+        worldQuery.enter(where);
+        try {
+            return worldQuery.rayCastClosest(x1, y1, x2, y2, filter, out);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    /**
+     * Casts a ray from (x1, y1) to (x2, y2) and reports every hit, as Box2D's ray casts do: each
+     * part of a body's shape the ray enters (a multi-shape part by part) and each landscape segment
+     * it crosses, at or before the ray's current end, bodies in world order, then segments in
+     * index order (not sorted by distance). The callback steers the ray: 0 stops it, a fraction
+     * clips it there, −1 ignores the hit, 1 goes on (see {@link CastCallback#reportHit}); returning
+     * each hit's fraction leaves the closest as the last one reported. What counts as a hit is as
+     * for {@link #rayCastClosest}. Allocates nothing.
+     *
+     * @param x1 the ray's start x (px)
+     * @param y1 the ray's start y (px)
+     * @param x2 the ray's end x (px)
+     * @param y2 the ray's end y (px)
+     * @param callback receives the hits; it must not add or remove bodies or start another query
+     * @throws IllegalArgumentException naming the call and value when a coordinate is NaN or
+     *     infinite, the ray is longer than a float holds, or the callback is null
+     * @throws IllegalStateException when the callback returns NaN, or when called from the
+     *     callback or filter of a running query
+     */
+    public void rayCast(float x1, float y1, float x2, float y2, CastCallback callback) {
+        String where = "World.rayCast";
+        checkRay(where, x1, y1, x2, y2);
+        Check.notNull(where, "callback", callback);
+        worldQuery.enter(where);
+        try {
+            worldQuery.rayCast(x1, y1, x2, y2, callback);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    /**
+     * Sweeps a shape, placed with its origin at (x, y) and turned by angle, along the translation
+     * (dx, dy) without turning, and finds the first body or landscape segment it touches: exactly
+     * (vertex against face, circles as rounded faces and corners, in closed form), not by boxes or
+     * steps. The hit's fraction is how much of the translation the shape travels before it
+     * touches, the point where it touches, the normal the surface's there, pointing from what was
+     * hit to the shape. A shape that overlaps or touches something at the start hits it at fraction
+     * 0, the normal then giving its shortest way out (start a hair away to slide along a surface);
+     * a zero translation is thus an overlap test. A faced landscape segment stops the shape only
+     * when its origin starts on the blocking side, as it stops bodies. Ties go to the body first in
+     * world order, bodies before segments. Allocates nothing.
+     *
+     * @param shape the shape to sweep (any kind; it need not belong to a body)
+     * @param x the x of its origin at the start (px)
+     * @param y the y of its origin at the start (px)
+     * @param angle its angle (rad)
+     * @param dx the translation's x (px)
+     * @param dy the translation's y (px)
+     * @param filter which bodies and segments may be hit, or null for all
+     * @param out receives the first hit, or is cleared when there is none
+     * @return whether something was hit
+     * @throws IllegalArgumentException naming the call and value when a number is NaN or infinite,
+     *     or the shape or out is null
+     * @throws IllegalStateException when called from the callback or filter of a running query
+     */
+    public boolean castShapeClosest(Shape shape, float x, float y, float angle, float dx, float dy, QueryFilter filter,
+            CastHit out) {
+        String where = "World.castShapeClosest";
+        checkCast(where, shape, x, y, angle, dx, dy);
+        Check.notNull(where, "out", out);
+        worldQuery.enter(where);
+        try {
+            return worldQuery.castShapeClosest(shape, x, y, EMath.cos(angle), EMath.sin(angle), dx, dy, filter, out);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    /**
+     * Sweeps a shape along a translation (see {@link #castShapeClosest}) and reports, for each part
+     * of each body and each landscape segment it would touch, the first contact with it, at or
+     * before the cast's current end: bodies in world order, then segments in index order. The
+     * callback steers the cast as for {@link #rayCast}. Allocates nothing.
+     *
+     * @param shape the shape to sweep
+     * @param x the x of its origin at the start (px)
+     * @param y the y of its origin at the start (px)
+     * @param angle its angle (rad)
+     * @param dx the translation's x (px)
+     * @param dy the translation's y (px)
+     * @param callback receives the hits; it must not add or remove bodies or start another query
+     * @throws IllegalArgumentException naming the call and value when a number is NaN or infinite,
+     *     or the shape or callback is null
+     * @throws IllegalStateException when the callback returns NaN, or when called from the
+     *     callback or filter of a running query
+     */
+    public void castShape(Shape shape, float x, float y, float angle, float dx, float dy, CastCallback callback) {
+        String where = "World.castShape";
+        checkCast(where, shape, x, y, angle, dx, dy);
+        Check.notNull(where, "callback", callback);
+        worldQuery.enter(where);
+        try {
+            worldQuery.castShape(shape, x, y, EMath.cos(angle), EMath.sin(angle), dx, dy, callback);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    /**
+     * Reports, by their index in the world's list, the bodies whose shape contains a point (on the
+     * boundary counts), in increasing index order, until the callback returns false. Bodies of
+     * every kind are found where they are now, as by {@link #queryBodies}. Allocates nothing.
+     *
+     * @param x the point's x (px)
+     * @param y the point's y (px)
+     * @param callback receives the indices; it must not add or remove bodies or start another
+     *     query
+     * @throws IllegalArgumentException naming the call and value when a coordinate is NaN or
+     *     infinite, or the callback is null
+     * @throws IllegalStateException when called from the callback or filter of a running query
+     */
+    public void queryPoint(float x, float y, QueryCallback callback) {
+        String where = "World.queryPoint";
+        Check.finite(where, "x", x);
+        Check.finite(where, "y", y);
+        Check.notNull(where, "callback", callback);
+        worldQuery.enter(where);
+        try {
+            worldQuery.queryPoint(x, y, callback);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    /**
+     * The body at a point, as the original engine's {@code findBodyAt}: the first body in world
+     * order whose shape contains the point (on the boundary counts). Use {@link #queryPoint} for
+     * all of them (the last one is the one drawn on top when bodies are drawn in world order).
+     *
+     * @param x the point's x (px)
+     * @param y the point's y (px)
+     * @return the body, or null when no body contains the point
+     * @throws IllegalArgumentException naming the call and value when a coordinate is NaN or
+     *     infinite
+     * @throws IllegalStateException when called from the callback or filter of a running query
+     */
+    public Body findBodyAt(float x, float y) {
+        String where = "World.findBodyAt";
+        Check.finite(where, "x", x);
+        Check.finite(where, "y", y);
+        worldQuery.enter(where);
+        try {
+            return worldQuery.queryPoint(x, y, null);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    /**
+     * Reports, by their index in the world's list, the bodies whose shape overlaps a shape placed
+     * with its origin at (x, y) and turned by angle: exactly (separating axes over the faces of
+     * both and, for circles, the axis to the nearest corner), not by boxes; touching counts;
+     * multi-shapes part by part. Bodies of every kind, where they are now, in increasing index
+     * order, until the callback returns false. Allocates nothing.
+     *
+     * @param shape the shape (any kind; it need not belong to a body)
+     * @param x the x of its origin (px)
+     * @param y the y of its origin (px)
+     * @param angle its angle (rad)
+     * @param callback receives the indices; it must not add or remove bodies or start another
+     *     query
+     * @throws IllegalArgumentException naming the call and value when a number is NaN or infinite,
+     *     or the shape or callback is null
+     * @throws IllegalStateException when called from the callback or filter of a running query
+     */
+    public void overlapShape(Shape shape, float x, float y, float angle, QueryCallback callback) {
+        String where = "World.overlapShape";
+        checkCast(where, shape, x, y, angle, 0f, 0f);
+        Check.notNull(where, "callback", callback);
+        worldQuery.enter(where);
+        try {
+            worldQuery.overlapShape(shape, x, y, EMath.cos(angle), EMath.sin(angle), callback);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    /**
+     * Reports, by their index in the world's {@link Landscape}, the segments that a placed shape
+     * overlaps or touches, exactly and whatever their facing, in increasing index order, until the
+     * callback returns false. Allocates nothing.
+     *
+     * @param shape the shape
+     * @param x the x of its origin (px)
+     * @param y the y of its origin (px)
+     * @param angle its angle (rad)
+     * @param callback receives the segment indices; it must not change the landscape or start
+     *     another query
+     * @throws IllegalArgumentException naming the call and value when a number is NaN or infinite,
+     *     or the shape or callback is null
+     * @throws IllegalStateException when called from the callback or filter of a running query
+     */
+    public void overlapLandscape(Shape shape, float x, float y, float angle, QueryCallback callback) {
+        String where = "World.overlapLandscape";
+        checkCast(where, shape, x, y, angle, 0f, 0f);
+        Check.notNull(where, "callback", callback);
+        worldQuery.enter(where);
+        try {
+            worldQuery.overlapLandscape(shape, x, y, EMath.cos(angle), EMath.sin(angle), callback);
+        } finally {
+            worldQuery.exit();
+        }
+    }
+
+    private static void checkRay(String where, float x1, float y1, float x2, float y2) {
+        Check.finite(where, "x1", x1);
+        Check.finite(where, "y1", y1);
+        Check.finite(where, "x2", x2);
+        Check.finite(where, "y2", y2);
+        if (!EMath.isFinite(x2 - x1) || !EMath.isFinite(y2 - y1)) {
+            throw new IllegalArgumentException(where + ": the ray from (" + x1 + ", " + y1 + ") to (" + x2 + ", " + y2
+                + ") is longer than a float holds");
+        }
+    }
+
+    private static void checkCast(String where, Shape shape, float x, float y, float angle, float dx, float dy) {
+        Check.notNull(where, "shape", shape);
+        Check.finite(where, "x", x);
+        Check.finite(where, "y", y);
+        Check.finite(where, "angle", angle);
+        Check.finite(where, "dx", dx);
+        Check.finite(where, "dy", dy);
     }
 
     private static void checkRectangle(String where, String what, float minX, float minY, float maxX, float maxY) {

@@ -6,5 +6,12 @@
  * {@code SolverBodies}, and forgotten when the pair's bounding boxes separate. Landscape contacts
  * (a dynamic body and a {@link org.emini.dynamics.Landscape} segment) live alongside, found through
  * the landscape's own static tree. {@code SimulationArea} picks the bodies a tick simulates.
+ *
+ * <p>The world's queries ({@link org.emini.dynamics.Simulation#rayCast},
+ * {@link org.emini.dynamics.Simulation#castShape}, {@link org.emini.dynamics.Simulation#queryPoint},
+ * {@link org.emini.dynamics.Simulation#overlapShape} and their kin) live in {@code WorldQuery}: it
+ * finds candidates as {@link org.emini.dynamics.Simulation#queryBodies} does ({@code BodyQuery}),
+ * tests them exactly, and fills a {@link org.emini.dynamics.CastHit} or calls a
+ * {@link org.emini.dynamics.CastCallback}.
  */
 package org.emini.dynamics;

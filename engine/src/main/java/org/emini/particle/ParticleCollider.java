@@ -1,10 +1,7 @@
 package org.emini.particle;
 
+import org.emini.collision.RayCaster;
 import org.emini.math.EMath;
-import org.emini.shape.Circle;
-import org.emini.shape.MultiShape;
-import org.emini.shape.Polygon;
-import org.emini.shape.Shape;
 
 /**
  * Bounces particles off the bodies and landscape segments of an {@link ObstacleGrid}.
@@ -12,7 +9,8 @@ import org.emini.shape.Shape;
  * <p>Each particle's motion of the tick is a segment, tested as a whole so a fast particle cannot
  * pass through a thin wall: against a polygon by clipping it to the face half-planes, against a
  * circle by solving for where it meets the rim, against a landscape segment (from either side) by
- * intersecting the two. A moving body is tested in its own frame, the segment's start taken against
+ * intersecting the two; the geometry is the collision package's {@link RayCaster}, the one the
+ * world's ray casts use, here with a skin of {@link #SKIN}. A moving body is tested in its own frame, the segment's start taken against
  * the body's pose at the start of the tick and its end against the pose at the end, so a body that
  * sweeps over a particle meets it on the face that swept it. The earliest hit wins; the particle is
  * put on the surface there (a hair outside, at the end-of-tick pose), the normal part of its
@@ -42,12 +40,8 @@ final class ParticleCollider {
 
     private final ObstacleGrid grid;
 
-    // The result of the last shape test: in the body's frame for bodies, in the world for segments.
-    private float hitT;
-    private float hitX;
-    private float hitY;
-    private float hitNx;
-    private float hitNy;
+    // The last shape test and its result: in the body's frame for bodies, in the world for segments.
+    private final RayCaster ray = new RayCaster(SKIN);
 
     // The earliest hit found by earliestHit, in the world, with the surface's velocity there.
     private float bestT;
@@ -190,8 +184,7 @@ final class ParticleCollider {
                 float s = g.s1[b];
                 float lx = c * (x - g.x1[b]) + s * (y - g.y1[b]);
                 float ly = -s * (x - g.x1[b]) + c * (y - g.y1[b]);
-                Shape shape = g.shapes[b];
-                if (insideShape(shape, lx, ly)) {
+                if (ray.contains(g.shapes[b], lx, ly)) {
                     k = b;
                 }
             }
@@ -200,9 +193,9 @@ final class ParticleCollider {
             }
             float c = g.c1[k];
             float s = g.s1[k];
-            float nx = c * hitNx - s * hitNy;
-            float ny = s * hitNx + c * hitNy;
-            clipToSegments(x, y, g.x1[k] + c * hitX - s * hitY, g.y1[k] + s * hitX + c * hitY);
+            float nx = c * ray.normalX - s * ray.normalY;
+            float ny = s * ray.normalX + c * ray.normalY;
+            clipToSegments(x, y, g.x1[k] + c * ray.x - s * ray.y, g.y1[k] + s * ray.x + c * ray.y);
             x = settledX;
             y = settledY;
             float vn = vx * nx + vy * ny;
@@ -232,10 +225,10 @@ final class ParticleCollider {
         float first = Float.POSITIVE_INFINITY;
         for (int j = 0, n = g.foundCount; j < n; j++) {
             int k = g.found[j];
-            if (k >= g.bodyCount && hitSegment(k - g.bodyCount, fromX, fromY, toX, toY) && hitT < first) {
-                first = hitT;
-                settledX = hitX;
-                settledY = hitY;
+            if (k >= g.bodyCount && hitSegment(k - g.bodyCount, fromX, fromY, toX, toY) && ray.t < first) {
+                first = ray.t;
+                settledX = ray.x;
+                settledY = ray.y;
             }
         }
     }
@@ -256,13 +249,13 @@ final class ParticleCollider {
         for (int j = 0, n = g.foundCount; j < n; j++) {
             int k = found[j];
             if (k >= g.bodyCount) {
-                if (hitSegment(k - g.bodyCount, ax, ay, bx, by) && hitT < bestT) {
+                if (hitSegment(k - g.bodyCount, ax, ay, bx, by) && ray.t < bestT) {
                     best = k;
-                    bestT = hitT;
-                    bestX = hitX;
-                    bestY = hitY;
-                    bestNx = hitNx;
-                    bestNy = hitNy;
+                    bestT = ray.t;
+                    bestX = ray.x;
+                    bestY = ray.y;
+                    bestNx = ray.normalX;
+                    bestNy = ray.normalY;
                     bestVx = 0f;
                     bestVy = 0f;
                 }
@@ -281,14 +274,14 @@ final class ParticleCollider {
             float s1 = g.s1[k];
             float lbx = c1 * (bx - x1) + s1 * (by - y1);
             float lby = -s1 * (bx - x1) + c1 * (by - y1);
-            if (hitShape(g.shapes[k], lax, lay, lbx, lby) && hitT < bestT) {
+            if (ray.shape(g.shapes[k], lax, lay, lbx, lby) && ray.t < bestT) {
                 best = k;
-                bestT = hitT;
+                bestT = ray.t;
                 // Back in the world, at the body's end pose.
-                bestX = x1 + c1 * hitX - s1 * hitY;
-                bestY = y1 + s1 * hitX + c1 * hitY;
-                bestNx = c1 * hitNx - s1 * hitNy;
-                bestNy = s1 * hitNx + c1 * hitNy;
+                bestX = x1 + c1 * ray.x - s1 * ray.y;
+                bestY = y1 + s1 * ray.x + c1 * ray.y;
+                bestNx = c1 * ray.normalX - s1 * ray.normalY;
+                bestNy = s1 * ray.normalX + c1 * ray.normalY;
                 bestVx = g.vx[k] - g.w[k] * (bestY - y1);
                 bestVy = g.vy[k] + g.w[k] * (bestX - x1);
             }
@@ -311,246 +304,8 @@ final class ParticleCollider {
      * path through a joint of a chain is caught by one of its segments despite rounding; a path
      * starting exactly on the line is not a crossing.
      */
-    boolean hitSegment(int s, float ax, float ay, float bx, float by) {
+    private boolean hitSegment(int s, float ax, float ay, float bx, float by) {
         ObstacleGrid g = grid;
-        float px = g.segX1[s];
-        float py = g.segY1[s];
-        float ex = g.segX2[s] - px;
-        float ey = g.segY2[s] - py;
-        // Twice the signed areas: the sides of a and b, scaled by the segment's length.
-        float da = ex * (ay - py) - ey * (ax - px);
-        float db = ex * (by - py) - ey * (bx - px);
-        if (da == 0f || da > 0f && db > 0f || da < 0f && db < 0f) {
-            return false;
-        }
-        float len2 = ex * ex + ey * ey;
-        if (!(len2 > 0f)) {
-            return false;
-        }
-        float t = da / (da - db);
-        float qx = ax + t * (bx - ax);
-        float qy = ay + t * (by - ay);
-        float len = EMath.sqrt(len2);
-        float along = ((qx - px) * ex + (qy - py) * ey) / len;
-        if (along < -SKIN || along > len + SKIN) {
-            return false;
-        }
-        // The normal on a's side; the hit on the line, then a skin out.
-        float nx = -ey / len;
-        float ny = ex / len;
-        if (da < 0f) {
-            nx = -nx;
-            ny = -ny;
-        }
-        float out = SKIN - (nx * (qx - px) + ny * (qy - py));
-        hitT = t;
-        hitX = qx + out * nx;
-        hitY = qy + out * ny;
-        hitNx = nx;
-        hitNy = ny;
-        return true;
-    }
-
-    private boolean hitShape(Shape shape, float ax, float ay, float bx, float by) {
-        int type = shape.getType();
-        if (type == Shape.TYPE_CIRCLE) {
-            return hitCircle((Circle) shape, ax, ay, bx, by);
-        }
-        if (type == Shape.TYPE_POLYGON) {
-            return hitPolygon((Polygon) shape, ax, ay, bx, by);
-        }
-        // A multi-shape: the earliest hit among its parts, which share the body's frame.
-        MultiShape multi = (MultiShape) shape;
-        float t = Float.POSITIVE_INFINITY;
-        float x = 0f;
-        float y = 0f;
-        float nx = 0f;
-        float ny = 0f;
-        for (int i = 0, n = multi.getShapeCount(); i < n; i++) {
-            if (hitShape(multi.getShape(i), ax, ay, bx, by) && hitT < t) {
-                t = hitT;
-                x = hitX;
-                y = hitY;
-                nx = hitNx;
-                ny = hitNy;
-            }
-        }
-        hitT = t;
-        hitX = x;
-        hitY = y;
-        hitNx = nx;
-        hitNy = ny;
-        return t <= 1f;
-    }
-
-    /** Whether a body-local point is inside a shape (for a multi-shape: in one of its parts). */
-    private boolean insideShape(Shape shape, float x, float y) {
-        int type = shape.getType();
-        if (type == Shape.TYPE_CIRCLE) {
-            return insideCircle((Circle) shape, x, y);
-        }
-        if (type == Shape.TYPE_POLYGON) {
-            return insidePolygon((Polygon) shape, x, y);
-        }
-        MultiShape multi = (MultiShape) shape;
-        for (int i = 0, n = multi.getShapeCount(); i < n; i++) {
-            if (insideShape(multi.getShape(i), x, y)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * Clips the segment a→b to the polygon's face half-planes (Cyrus–Beck). The segment enters at
-     * the largest entering parameter, through that face, if that is not after it leaves. A start
-     * inside is a hit at t = 0 through the face nearest to the start.
-     */
-    boolean hitPolygon(Polygon p, float ax, float ay, float bx, float by) {
-        int face = -1;
-        float enter = 0f;
-        float leave = 1f;
-        int nearest = 0;
-        float nearestDepth = Float.NEGATIVE_INFINITY;
-        for (int i = 0, n = p.getVertexCount(); i < n; i++) {
-            float nx = p.getNormalX(i);
-            float ny = p.getNormalY(i);
-            float d = nx * p.getVertexX(i) + ny * p.getVertexY(i);
-            float da = nx * ax + ny * ay - d;
-            float db = nx * bx + ny * by - d;
-            if (da > 0f) {
-                if (db > 0f) {
-                    return false;
-                }
-                float t = da / (da - db);
-                if (face < 0 || t > enter) {
-                    enter = t;
-                    face = i;
-                }
-            } else {
-                if (da > nearestDepth) {
-                    nearestDepth = da;
-                    nearest = i;
-                }
-                if (db > 0f) {
-                    float t = da / (da - db);
-                    if (t < leave) {
-                        leave = t;
-                    }
-                }
-            }
-        }
-        float qx = ax;
-        float qy = ay;
-        if (face < 0) {
-            face = nearest;
-            hitT = 0f;
-        } else {
-            if (enter > leave) {
-                return false;
-            }
-            hitT = enter;
-            qx += enter * (bx - ax);
-            qy += enter * (by - ay);
-        }
-        surface(p, face, qx, qy);
-        return true;
-    }
-
-    /** Puts the hit on a face's line exactly, then a skin outside it, whatever the rounding so far. */
-    private void surface(Polygon p, int face, float qx, float qy) {
-        float nx = p.getNormalX(face);
-        float ny = p.getNormalY(face);
-        float out = SKIN - (nx * (qx - p.getVertexX(face)) + ny * (qy - p.getVertexY(face)));
-        hitX = qx + out * nx;
-        hitY = qy + out * ny;
-        hitNx = nx;
-        hitNy = ny;
-    }
-
-    /** Whether a point is inside a polygon; if so, leaves the way out through the nearest face. */
-    boolean insidePolygon(Polygon p, float x, float y) {
-        int nearest = 0;
-        float nearestDepth = Float.NEGATIVE_INFINITY;
-        for (int i = 0, n = p.getVertexCount(); i < n; i++) {
-            float nx = p.getNormalX(i);
-            float ny = p.getNormalY(i);
-            float depth = nx * (x - p.getVertexX(i)) + ny * (y - p.getVertexY(i));
-            if (depth > 0f) {
-                return false;
-            }
-            if (depth > nearestDepth) {
-                nearestDepth = depth;
-                nearest = i;
-            }
-        }
-        hitT = 0f;
-        surface(p, nearest, x, y);
-        return true;
-    }
-
-    /**
-     * Meets the segment a→b with the circle's rim: the smaller root of |a + t(b − a) − c|² = r². A
-     * start inside is a hit at t = 0, out along the radius.
-     */
-    boolean hitCircle(Circle circle, float ax, float ay, float bx, float by) {
-        float cx = circle.getCenterX();
-        float cy = circle.getCenterY();
-        float r = circle.getRadius();
-        float fx = ax - cx;
-        float fy = ay - cy;
-        float c = fx * fx + fy * fy - r * r;
-        if (c <= 0f) {
-            hitT = 0f;
-            radial(circle, fx, fy);
-            return true;
-        }
-        float dx = bx - ax;
-        float dy = by - ay;
-        float half = fx * dx + fy * dy;
-        if (half >= 0f) {
-            return false;
-        }
-        float aa = dx * dx + dy * dy;
-        float disc = half * half - aa * c;
-        if (disc < 0f) {
-            return false;
-        }
-        float t = (-half - EMath.sqrt(disc)) / aa;
-        if (t > 1f) {
-            return false;
-        }
-        hitT = Math.max(0f, t);
-        radial(circle, fx + hitT * dx, fy + hitT * dy);
-        return true;
-    }
-
-    /** Whether a point is inside a circle; if so, leaves the way out along the radius. */
-    boolean insideCircle(Circle circle, float x, float y) {
-        float fx = x - circle.getCenterX();
-        float fy = y - circle.getCenterY();
-        float r = circle.getRadius();
-        if (fx * fx + fy * fy > r * r) {
-            return false;
-        }
-        hitT = 0f;
-        radial(circle, fx, fy);
-        return true;
-    }
-
-    /** Puts the hit a skin outside the rim along the direction (qx, qy) from the centre. */
-    private void radial(Circle circle, float qx, float qy) {
-        float len = EMath.sqrt(qx * qx + qy * qy);
-        float nx = 0f;
-        float ny = -1f;
-        if (len > 0f) {
-            nx = qx / len;
-            ny = qy / len;
-        }
-        float r = circle.getRadius() + SKIN;
-        hitX = circle.getCenterX() + nx * r;
-        hitY = circle.getCenterY() + ny * r;
-        hitNx = nx;
-        hitNy = ny;
+        return ray.segment(g.segX1[s], g.segY1[s], g.segX2[s], g.segY2[s], ax, ay, bx, by);
     }
 }
