@@ -21,9 +21,10 @@ final class Extremes {
         switch (which) {
             case 0 -> {
                 if (b != null) {
-                    float scale = (float) Math.pow(10, rand.between(3, 30));
-                    b.vx *= scale;
-                    b.vy = b.vy * scale + scale;
+                    double scale = Math.pow(10, rand.between(3, 30));
+                    // Twice on one body would pass 10³⁰ and even a float's range: an input no setter takes.
+                    b.vx = atMostHuge(b.vx * scale);
+                    b.vy = atMostHuge(b.vy * scale + scale);
                 }
             }
             case 1 -> {
@@ -59,6 +60,10 @@ final class Extremes {
                 s.stiffness = 1e9f;
             });
         }
+    }
+
+    private static float atMostHuge(double v) {
+        return (float) Math.max(-1e30, Math.min(1e30, v));
     }
 
     /**
