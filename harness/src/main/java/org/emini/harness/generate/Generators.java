@@ -117,7 +117,8 @@ public final class Generators {
             if (g.randomAngle()) {
                 double a = random.nextDouble() * 2 * Math.PI;
                 state = new BodyState(state.isStatic(), a, state.vx(), state.vy(), state.angularVelocity(),
-                        state.rotatable(), state.interacting(), state.gravity(), state.layers());
+                        state.rotatable(), state.interacting(), state.gravity(), state.layers(),
+                        state.sleepingAllowed());
             }
             out.add(body(g, i, shape, x, y, state));
         }

@@ -23,6 +23,7 @@ import org.emini.harness.scenario.RunSpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.Section;
 import org.emini.harness.scenario.ShapeSpec;
+import org.emini.harness.scenario.SleepSpec;
 import org.emini.harness.scenario.WorldSpec;
 
 /**
@@ -178,7 +179,19 @@ final class ScenarioReader {
                 damping != null && damping.has("lateral") ? damping.get("lateral").asDouble() : d.dampingLateral(),
                 damping != null && damping.has("rotational") ? damping.get("rotational").asDouble()
                         : d.dampingRotational(),
-                w.has("simulationArea"), solver);
+                w.has("simulationArea"), solver, sleeping(w.get("sleeping")));
+    }
+
+    /** {@code sleeping: true|false} or an object of tolerances (which turns it on). */
+    private static SleepSpec sleeping(JsonNode s) {
+        if (s == null) {
+            return SleepSpec.OFF;
+        }
+        if (s.isBoolean()) {
+            return SleepSpec.OFF.switched(s.asBoolean());
+        }
+        return new SleepSpec(true, num(s, "linearTolerance", Double.NaN), num(s, "angularTolerance", Double.NaN),
+                num(s, "timeToSleep", Double.NaN));
     }
 
     private ShapeSpec shapeRef(JsonNode node, JsonPath p) {
@@ -247,7 +260,7 @@ final class ScenarioReader {
         }
         return new BodyState(bool(b, "static", false), angle, v[0], v[1], num(b, "angularVelocity", 0),
                 bool(b, "rotatable", true), bool(b, "interacting", true), bool(b, "gravity", true),
-                List.copyOf(layers));
+                List.copyOf(layers), bool(b, "sleepingAllowed", true));
     }
 
     private GeneratorSpec generator(JsonNode g, JsonPath p) {

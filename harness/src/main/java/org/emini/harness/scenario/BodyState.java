@@ -15,9 +15,11 @@ import java.util.List;
  * @param interacting whether the body collides with other bodies
  * @param gravity whether gravity acts on the body
  * @param layers collision layer bits (0..31)
+ * @param sleepingAllowed whether the body may fall asleep when the world lets bodies sleep (default true)
  */
 public record BodyState(boolean isStatic, double angle, double vx, double vy, double angularVelocity,
-                        boolean rotatable, boolean interacting, boolean gravity, List<Integer> layers) {
+                        boolean rotatable, boolean interacting, boolean gravity, List<Integer> layers,
+                        boolean sleepingAllowed) {
     /** The manual's defaults. */
-    public static final BodyState DEFAULT = new BodyState(false, 0, 0, 0, 0, true, true, true, List.of());
+    public static final BodyState DEFAULT = new BodyState(false, 0, 0, 0, 0, true, true, true, List.of(), true);
 }
