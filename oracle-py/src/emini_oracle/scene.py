@@ -31,6 +31,7 @@ METRIC_CHANNELS = {
     "tunnelling": ["tunnelling.count"],
     "stability": ["stability.maxSpeed", "stability.maxAngularSpeed", "stability.nonFinite"],
     "particles": ["particles.count", "particles.outside"],
+    "sleeping": ["sleeping.count", "sleeping.fraction"],
 }
 BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed")
 
@@ -92,10 +93,11 @@ class BodyState:
     interacting: bool = True
     gravity: bool = True
     layers: tuple = ()
+    sleeping_allowed: bool = True
 
     def with_angle(self, angle):
         return BodyState(self.static, angle, self.vx, self.vy, self.angular_velocity, self.rotatable,
-                         self.interacting, self.gravity, self.layers)
+                         self.interacting, self.gravity, self.layers, self.sleeping_allowed)
 
 
 @dataclass
@@ -110,7 +112,8 @@ class Body:
         s = self.state
         return {"name": self.name, "position": [self.x, self.y], "static": s.static, "angle": s.angle,
                 "velocity": [s.vx, s.vy], "angularVelocity": s.angular_velocity, "rotatable": s.rotatable,
-                "interacting": s.interacting, "gravity": s.gravity, "layers": list(s.layers),
+                "interacting": s.interacting, "gravity": s.gravity, "sleepingAllowed": s.sleeping_allowed,
+                "layers": list(s.layers),
                 "shape": self.shape.to_json()}
 
 
@@ -124,6 +127,9 @@ class World:
     damping_rotational: float = 0.0
     simulation_area: Optional[dict] = None
     solver: dict = field(default_factory=dict)
+    # world.sleeping: None when off, else the tolerances the scene gives (linearTolerance,
+    # angularTolerance, timeToSleep; missing ones take the engine's defaults)
+    sleeping: Optional[dict] = None
 
 
 @dataclass
@@ -341,6 +347,15 @@ def json_path(parts):
 # ------------------------------------------------------------------------------------------------
 # Reading a valid document
 
+def _sleeping(s):
+    """world.sleeping: true/false, or an object of tolerances (which turns it on)."""
+    if s is None or s is False:
+        return None
+    if s is True:
+        return {}
+    return {k: float(v) for k, v in s.items()}
+
+
 def _vec(v, dx=0.0, dy=0.0):
     return (float(v[0]), float(v[1])) if v is not None else (dx, dy)
 
@@ -412,7 +427,8 @@ class _Reader:
                      gravity=_vec(w.get("gravity"), *d.gravity),
                      damping_lateral=_num(damping, "lateral", 0.0),
                      damping_rotational=_num(damping, "rotational", 0.0),
-                     simulation_area=w.get("simulationArea"), solver=dict(w.get("solver") or {}))
+                     simulation_area=w.get("simulationArea"), solver=dict(w.get("solver") or {}),
+                     sleeping=_sleeping(w.get("sleeping")))
 
     def shape_ref(self, node, path):
         if isinstance(node, str):
@@ -448,7 +464,8 @@ class _Reader:
         return BodyState(static=bool(b.get("static", False)), angle=angle, vx=vx, vy=vy,
                          angular_velocity=_num(b, "angularVelocity", 0.0),
                          rotatable=bool(b.get("rotatable", True)), interacting=bool(b.get("interacting", True)),
-                         gravity=bool(b.get("gravity", True)), layers=tuple(int(x) for x in b.get("layers") or []))
+                         gravity=bool(b.get("gravity", True)), layers=tuple(int(x) for x in b.get("layers") or []),
+                         sleeping_allowed=bool(b.get("sleepingAllowed", True)))
 
     def generator(self, g, path):
         shapes = []
