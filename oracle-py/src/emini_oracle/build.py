@@ -22,6 +22,10 @@ ALL_BITS = 0xFFFFFFFF
 
 # Chipmunk's own default, set explicitly: the fraction of overlap left after one second.
 COLLISION_BIAS = pow(1.0 - 0.1, 60.0)
+# Emini's sleeping defaults (SolverSettings): rest below 1 px/s and 2 deg/s for 0.5 s.
+SLEEP_LINEAR_TOLERANCE = 1.0
+SLEEP_ANGULAR_TOLERANCE = 2.0 * math.pi / 180.0
+SLEEP_TIME = 0.5
 # collision_slop = SLOP_PER_LENGTH x the smallest dynamic body (Chipmunk's default 0.1 px would leave a
 # resting body at its impact depth; verification-notes.md, pymunk pitfalls).
 SLOP_PER_LENGTH = 1e-5
@@ -74,6 +78,31 @@ class Built:
     approximations: list = field(default_factory=list)
     settings: dict = field(default_factory=dict)
     damping: tuple = (1.0, 1.0)  # velocity kept per tick (lateral, rotational), applied after the step
+    sleeping: bool = False  # world.sleeping is on: pymunk's sleeping runs (MAPPING.md, Sleeping)
+    never_sleep: list = field(default_factory=list)  # bodies with sleepingAllowed: false, activated every tick
+
+    def damp_quietly(self, damped):
+        """Emini's per-tick damping (MAPPING.md, Damping) without waking anything, for a space that lets
+        bodies sleep: pymunk's velocity setters activate the body, which resets its idle time, so no damped
+        body could ever fall asleep. cpBodyUpdateVelocity(body, g, d, dt) sets v = d·v + g·dt and
+        ω = d·ω (forces and torques are already cleared after the step) without activating: with d the
+        rotational factor and g·dt = (lateral − rotational)·v it gives both factors. Sleeping bodies are
+        left alone (Emini does not simulate them)."""
+        keep_lin, keep_rot = self.damping
+        from pymunk._chipmunk import lib
+        update = lib.cpBodyUpdateVelocity
+        for b, rot in damped:
+            if b.is_sleeping:
+                continue
+            d = keep_rot if rot else 1.0
+            v = b.velocity
+            update(b._body, ((keep_lin - d) * v.x, (keep_lin - d) * v.y), d, 1.0)
+
+    def keep_awake(self):
+        """Before each step: Emini's sleepingAllowed: false. Body.activate() resets the body's idle time
+        (and that of the bodies it touches), so its component cannot rest long enough to sleep."""
+        for b in self.never_sleep:
+            b.activate()
 
     def dynamic(self):
         return [(n, b) for n, b in self.bodies.items() if b.body_type == pymunk.Body.DYNAMIC]
@@ -156,7 +185,7 @@ def build(scene: Scene) -> Built:
     space.collision_bias = COLLISION_BIAS
     space.damping = 1.0  # Emini's per-tick damping is applied after each step (Built.damping)
     space.idle_speed_threshold = 0.0
-    space.sleep_time_threshold = float("inf")  # no sleeping: Emini has none
+    space.sleep_time_threshold = float("inf")  # no sleeping unless the scene turns it on (below)
     built = Built(scene, space, {}, {}, {})
     built.damping = (1.0 - w.damping_lateral, 1.0 - w.damping_rotational)
     if w.dynamic_iterations:
@@ -197,6 +226,8 @@ def build(scene: Scene) -> Built:
             sh.filter = filters(spec)
             shapes.append(sh)
         space.add(body, *shapes)
+        if not s.static and not s.sleeping_allowed:
+            built.never_sleep.append(body)
         built.bodies[spec.name] = body
         built.specs[spec.name] = spec
         built.shapes[spec.name] = shapes
@@ -207,6 +238,8 @@ def build(scene: Scene) -> Built:
                       "collision_bias": COLLISION_BIAS, "collision_persistence": space.collision_persistence,
                       "damping": 1.0, "perTickDamping": {"lateral": w.damping_lateral,
                                                          "rotational": w.damping_rotational}}
+    if w.sleeping is not None:
+        _sleeping(built, w.sleeping)
 
     el = scene.elements
     if "landscape" in el:
@@ -228,6 +261,31 @@ def build(scene: Scene) -> Built:
             "pymunk simulates every body; Emini freezes bodies outside " + _area_text(w.simulation_area)
             + " (checked at each sample: see affectsBodies)", affects_bodies=False))
     return built
+
+
+def _sleeping(built: Built, tolerances):
+    """world.sleeping on: pymunk's sleeping (MAPPING.md, Sleeping). Chipmunk lets a component sleep when
+    every body's m|v|² + I·ω² stayed at most m·idle_speed_threshold² for sleep_time_threshold, so the
+    threshold is Emini's linear tolerance and its angular tolerance has no separate counterpart."""
+    space = built.space
+    linear = float(tolerances.get("linearTolerance", SLEEP_LINEAR_TOLERANCE))
+    angular = float(tolerances.get("angularTolerance", SLEEP_ANGULAR_TOLERANCE))
+    seconds = float(tolerances.get("timeToSleep", SLEEP_TIME))
+    space.idle_speed_threshold = linear
+    space.sleep_time_threshold = seconds
+    built.sleeping = True
+    built.settings["sleep_time_threshold"] = seconds
+    built.settings["idle_speed_threshold"] = linear
+    built.approximations.append(Note(
+        "world.sleeping", "$.world.sleeping",
+        f"pymunk's sleeping: a body rests while m|v|² + I·ω² ≤ m·{linear:g}² (Emini: |v| ≤ {linear:g} px/s and "
+        f"|ω| ≤ {angular:g} rad/s, each on its own), for {seconds:g} s; sleeping bodies keep their last tiny "
+        "velocities (Emini zeroes them)"))
+    if built.never_sleep and seconds <= built.scene.world.timestep:
+        built.approximations.append(Note(
+            "sleepingAllowed", "$.bodies",
+            "timeToSleep is not longer than a tick, so pymunk may put a body that may not sleep to sleep within a "
+            "step before the oracle wakes it again"))
 
 
 def _area_text(a):

@@ -70,7 +70,7 @@ def _distance(a, b):
 def create(spec, built: Built, snapshot: Snapshot):
     return {"energy": Energy, "linearMomentum": LinearMomentum, "angularMomentum": AngularMomentum,
             "penetration": Penetration, "constraintError": ConstraintError, "tunnelling": Tunnelling,
-            "stability": Stability, "particles": Particles}[spec.kind](built, spec, snapshot)
+            "stability": Stability, "particles": Particles, "sleeping": Sleeping}[spec.kind](built, spec, snapshot)
 
 
 class Metric:
@@ -308,3 +308,15 @@ class Particles(Metric):
 
     def sample(self, tick):
         return [math.nan, math.nan]
+
+
+class Sleeping(Metric):
+    """sleeping.count = dynamic bodies pymunk has put to sleep (Body.is_sleeping); sleeping.fraction = that
+    over the dynamic bodies (0 without any). Both 0 while the scene's world.sleeping is off."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.bodies = snapshot.bodies
+
+    def sample(self, tick):
+        n = sum(1 for b in self.bodies if b.is_sleeping)
+        return [float(n), n / len(self.bodies) if self.bodies else 0.0]

@@ -32,6 +32,7 @@ METRIC_CHANNELS = {
     "tunnelling": ["tunnelling.count"],
     "stability": ["stability.maxSpeed", "stability.maxAngularSpeed", "stability.nonFinite"],
     "particles": ["particles.count", "particles.outside"],
+    "sleeping": ["sleeping.count", "sleeping.fraction"],
 }
 BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed")
 
@@ -98,6 +99,7 @@ class BodyState:
     categories: int = 1
     mask: int = 0xFFFFFFFF
     group: int = 0
+    sleeping_allowed: bool = True
 
     def with_angle(self, angle):
         return dataclasses.replace(self, angle=angle)
@@ -118,7 +120,8 @@ class Body:
         s = self.state
         out = {"name": self.name, "position": [self.x, self.y], "static": s.static, "angle": s.angle,
                "velocity": [s.vx, s.vy], "angularVelocity": s.angular_velocity, "rotatable": s.rotatable,
-               "interacting": s.interacting, "gravity": s.gravity, "layers": list(s.layers),
+               "interacting": s.interacting, "gravity": s.gravity, "sleepingAllowed": s.sleeping_allowed,
+               "layers": list(s.layers),
                "shape": self.shape.to_json()}
         if s.kinematic:
             out["kinematic"] = True
@@ -139,6 +142,9 @@ class World:
     damping_rotational: float = 0.0
     simulation_area: Optional[dict] = None
     solver: dict = field(default_factory=dict)
+    # world.sleeping: None when off, else the tolerances the scene gives (linearTolerance,
+    # angularTolerance, timeToSleep; missing ones take the engine's defaults)
+    sleeping: Optional[dict] = None
 
 
 @dataclass
@@ -356,6 +362,15 @@ def json_path(parts):
 # ------------------------------------------------------------------------------------------------
 # Reading a valid document
 
+def _sleeping(s):
+    """world.sleeping: true/false, or an object of tolerances (which turns it on)."""
+    if s is None or s is False:
+        return None
+    if s is True:
+        return {}
+    return {k: float(v) for k, v in s.items()}
+
+
 def _vec(v, dx=0.0, dy=0.0):
     return (float(v[0]), float(v[1])) if v is not None else (dx, dy)
 
@@ -441,7 +456,8 @@ class _Reader:
                      gravity=_vec(w.get("gravity"), *d.gravity),
                      damping_lateral=_num(damping, "lateral", 0.0),
                      damping_rotational=_num(damping, "rotational", 0.0),
-                     simulation_area=w.get("simulationArea"), solver=dict(w.get("solver") or {}))
+                     simulation_area=w.get("simulationArea"), solver=dict(w.get("solver") or {}),
+                     sleeping=_sleeping(w.get("sleeping")))
 
     def shape_ref(self, node, path):
         if isinstance(node, str):
@@ -488,7 +504,8 @@ class _Reader:
                          rotatable=bool(b.get("rotatable", True)), interacting=bool(b.get("interacting", True)),
                          gravity=bool(b.get("gravity", True)), layers=tuple(int(x) for x in b.get("layers") or []),
                          kinematic=kinematic, categories=_bits(b.get("categories"), 1),
-                         mask=_bits(b.get("mask"), 0xFFFFFFFF), group=int(b.get("group", 0)))
+                         mask=_bits(b.get("mask"), 0xFFFFFFFF), group=int(b.get("group", 0)),
+                         sleeping_allowed=bool(b.get("sleepingAllowed", True)))
 
     def generator(self, g, path):
         shapes = []

@@ -3,7 +3,8 @@
 # page's own self-test (#selftest) run (it starts the replay and checks every section), and fails
 # unless the page reports no script errors, every section filled, the plots loaded and the replay
 # moving (and, with EMINI_REQUIRE_ORACLE set, the oracle's points and maps present; with
-# EMINI_REQUIRE_BENCH set, the benchmark's table in the Speed section). Installs Debian's
+# EMINI_REQUIRE_BENCH set, the benchmark's table in the Speed section; with EMINI_REQUIRE_SLEEPING set,
+# sleeping bodies drawn in a replay and the run with sleeping on summarised). Installs Debian's
 # chromium first when /usr/bin/chromium is missing.
 #   harness/src/test/browser/check-dashboard.sh REPORTS [SCREENSHOT.png]
 set -euo pipefail
@@ -43,6 +44,14 @@ if [ -n "${EMINI_REQUIRE_BENCH:-}" ]; then
   case "$result" in
     *'"bench":false'*|*'"speedRows":0'*)
       echo "check-dashboard: FAILED: no benchmark table in the Speed section" >&2; exit 1 ;;
+  esac
+fi
+# With EMINI_REQUIRE_SLEEPING set the reports hold a scene that lets bodies sleep and the run with
+# sleeping forced on: the replay must draw sleeping bodies and the verdicts must summarise that run.
+if [ -n "${EMINI_REQUIRE_SLEEPING:-}" ]; then
+  case "$result" in
+    *'"sleepingReplays":0'*|*'"sleepingSummary":false'*)
+      echo "check-dashboard: FAILED: no sleeping replay or no summary of the run with sleeping on" >&2; exit 1 ;;
   esac
 fi
 case "$result" in

@@ -12,6 +12,7 @@ import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.run.SceneResult;
 import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.run.Status;
+import org.emini.harness.scenario.Scenario;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -38,12 +39,8 @@ class LibraryTest {
     void fastScenesHaveNoRegression() {
         List<String> regressions = new ArrayList<>();
         int ran = 0;
-        for (Path f : ScenarioFiles.expand(List.of(Repo.scenarios()))) {
-            ScenarioLoader.Loaded l = Scenes.loader().load(f);
-            if ((long) l.scenario().bodies().size() * l.scenario().ticks() > BUDGET) {
-                continue;
-            }
-            SceneResult r = ScenarioRunner.run(l.scenario(), n -> { });
+        for (Scenario s : fastScenes()) {
+            SceneResult r = ScenarioRunner.run(s, n -> { });
             ran++;
             if (r.status().failsRun()) {
                 regressions.add(r.scene() + ": " + r.message());
@@ -51,6 +48,41 @@ class LibraryTest {
         }
         assertEquals(List.of(), regressions);
         assertTrue(ran >= 40, ran + " scenes ran");
+    }
+
+    /**
+     * Issue 17: the library passes with sleeping on as well as off. The same fast scenes with sleeping
+     * forced on ({@code harness run --sleeping on}; the whole library runs so in ./emini run), and bodies
+     * must actually fall asleep in many of them, or the pass would prove nothing.
+     */
+    @Test
+    void fastScenesHaveNoRegressionWithSleepingOn() {
+        List<String> regressions = new ArrayList<>();
+        int ran = 0;
+        int slept = 0;
+        for (Scenario s : fastScenes()) {
+            SceneResult r = ScenarioRunner.run(s.withSleeping(true), n -> { });
+            ran++;
+            slept += r.mostAsleep() > 0 ? 1 : 0;
+            if (r.status().failsRun()) {
+                regressions.add(r.scene() + ": " + r.message());
+            }
+        }
+        assertEquals(List.of(), regressions);
+        assertTrue(ran >= 40, ran + " scenes ran");
+        assertTrue(slept >= 25, "bodies slept in only " + slept + " of " + ran + " scenes");
+    }
+
+    /** The scenes within the test budget. */
+    private static List<Scenario> fastScenes() {
+        List<Scenario> out = new ArrayList<>();
+        for (Path f : ScenarioFiles.expand(List.of(Repo.scenarios()))) {
+            ScenarioLoader.Loaded l = Scenes.loader().load(f);
+            if ((long) l.scenario().bodies().size() * l.scenario().ticks() <= BUDGET) {
+                out.add(l.scenario());
+            }
+        }
+        return out;
     }
 
     @Test

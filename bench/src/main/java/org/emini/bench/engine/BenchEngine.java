@@ -52,6 +52,14 @@ public interface BenchEngine extends AutoCloseable {
     default void particlePositions(double[] out) {
     }
 
+    /**
+     * Dynamic bodies the engine has put to sleep (scenes with {@code world.sleeping}), or -1 when the
+     * scene does not let bodies sleep.
+     */
+    default int sleepingCount() {
+        return -1;
+    }
+
     /** The engine's settings as used, for the report (timestep, iterations, unit scale, ...). */
     String settings();
 

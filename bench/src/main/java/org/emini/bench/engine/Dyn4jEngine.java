@@ -12,7 +12,8 @@ import org.emini.harness.scenario.Scenario;
 /**
  * dyn4j 5.0.2 at its default solver settings (10 velocity and 10 position iterations, continuous
  * collision for bullets against static bodies, warm starting), with at-rest detection (sleeping) off
- * so a settled scene keeps being simulated, as in every engine here. Metres via {@link PeerScene}.
+ * so a settled scene keeps being simulated, as in every engine here, unless the scene turns sleeping
+ * on ({@code world.sleeping}: then dyn4j's own at-rest tolerances). Metres via {@link PeerScene}.
  */
 final class Dyn4jEngine implements BenchEngine {
     private World<Body> world;
@@ -31,7 +32,7 @@ final class Dyn4jEngine implements BenchEngine {
         world = new World<>();
         Settings s = world.getSettings();
         s.setStepFrequency(scene.timestep);
-        s.setAtRestDetectionEnabled(false);
+        s.setAtRestDetectionEnabled(scene.sleeping);
         world.setGravity(scene.gravityX, scene.gravityY);
         bodies = new Body[scene.bodies.size()];
         int i = 0;
@@ -63,7 +64,7 @@ final class Dyn4jEngine implements BenchEngine {
             if (!pb.gravity) {
                 b.setGravityScale(0);
             }
-            b.setAtRestDetectionEnabled(false);
+            b.setAtRestDetectionEnabled(scene.sleeping && pb.sleepingAllowed);
             world.addBody(b);
             bodies[i++] = b;
         }
@@ -180,12 +181,28 @@ final class Dyn4jEngine implements BenchEngine {
     }
 
     @Override
+    public int sleepingCount() {
+        if (!world.getSettings().isAtRestDetectionEnabled()) {
+            return -1;
+        }
+        int n = 0;
+        for (Body b : bodies) {
+            n += !b.getMass().isInfinite() && b.isAtRest() ? 1 : 0;
+        }
+        return n;
+    }
+
+    @Override
     public String settings() {
         Settings s = world.getSettings();
         return "metres (20 px = 1 m); timestep " + s.getStepFrequency() + " s; "
             + s.getVelocityConstraintSolverIterations() + " velocity + " + s.getPositionConstraintSolverIterations()
             + " position iterations (defaults); continuous detection " + s.getContinuousDetectionMode()
-            + "; at-rest detection off" + (particles.any() ? "; " + JBox2dEngine.PARTICLES : "");
+            + (s.isAtRestDetectionEnabled() ? String.format(java.util.Locale.ROOT, "; at-rest detection (sleeping) on at "
+                + "dyn4j's tolerances (%.2f m/s = %.1f px/s, %.1f deg/s, %.1f s)", s.getMaximumAtRestLinearVelocity(),
+                s.getMaximumAtRestLinearVelocity() * PeerScene.PX_PER_M, Math.toDegrees(s.getMaximumAtRestAngularVelocity()),
+                s.getMinimumAtRestTime()) : "; at-rest detection off")
+            + (particles.any() ? "; " + JBox2dEngine.PARTICLES : "");
     }
 
     @Override

@@ -67,6 +67,18 @@ final class EminiEngine implements BenchEngine {
     }
 
     @Override
+    public int sleepingCount() {
+        if (!world.isSleepingEnabled()) {
+            return -1;
+        }
+        int n = 0;
+        for (Body b : bodies) {
+            n += b.isSleeping() ? 1 : 0;
+        }
+        return n;
+    }
+
+    @Override
     public int particleCount() {
         int n = 0;
         for (int k = 0; k < world.getParticleEmitterCount(); k++) {
@@ -90,7 +102,12 @@ final class EminiEngine implements BenchEngine {
     @Override
     public String settings() {
         return "px units; timestep " + world.getTimestep() + " s; " + world.getConstraintIterations()
-            + " substeps (each one soft solve + one relax pass); default SolverSettings; no sleeping (Emini has none)"
+            + " substeps (each one soft solve + one relax pass); default SolverSettings; "
+            + (world.isSleepingEnabled() ? String.format(java.util.Locale.ROOT, "sleeping on (%.1f px/s = %.2f m/s, "
+                + "%.1f deg/s, %.1f s)", world.getSolverSettings().getSleepLinearTolerance(),
+                world.getSolverSettings().getSleepLinearTolerance() / PeerScene.PX_PER_M,
+                Math.toDegrees(world.getSolverSettings().getSleepAngularTolerance()),
+                world.getSolverSettings().getTimeToSleep()) : "sleeping off")
             + (world.getParticleEmitterCount() > 0 ? "; particles: Emini's particle system (points, exact parabolas, "
                 + "swept against the bodies; never touch each other)" : "");
     }

@@ -23,6 +23,7 @@ final class GdxBox2dEngine implements BenchEngine {
     private Body[] bodies;
     private float dt;
     private PeerParticles<Body> particles;
+    private boolean sleeping;
 
     @Override
     public String id() {
@@ -34,7 +35,8 @@ final class GdxBox2dEngine implements BenchEngine {
         PeerScene scene = PeerScene.of(scenario, "gdx-box2d", MAX_POLYGON_VERTICES);
         Box2D.init();
         dt = (float) scene.timestep;
-        world = new World(new Vector2((float) scene.gravityX, (float) scene.gravityY), false);
+        world = new World(new Vector2((float) scene.gravityX, (float) scene.gravityY), scene.sleeping);
+        sleeping = scene.sleeping;
         bodies = new Body[scene.bodies.size()];
         int i = 0;
         for (PeerScene.PeerBody pb : scene.bodies) {
@@ -46,7 +48,7 @@ final class GdxBox2dEngine implements BenchEngine {
             def.angularVelocity = (float) pb.omega;
             def.fixedRotation = !pb.rotatable;
             def.gravityScale = pb.gravity ? 1f : 0f;
-            def.allowSleep = false;
+            def.allowSleep = scene.sleeping && pb.sleepingAllowed;
             Body b = world.createBody(def);
             for (PeerScene.PeerShape part : pb.parts) {
                 Shape shape = shape(part);
@@ -192,9 +194,22 @@ final class GdxBox2dEngine implements BenchEngine {
     }
 
     @Override
+    public int sleepingCount() {
+        if (!sleeping) {
+            return -1;
+        }
+        int n = 0;
+        for (Body b : bodies) {
+            n += b.getType() == BodyDef.BodyType.DynamicBody && !b.isAwake() ? 1 : 0;
+        }
+        return n;
+    }
+
+    @Override
     public String settings() {
         return "metres (20 px = 1 m); timestep " + dt + " s; " + JBox2dEngine.VELOCITY_ITERATIONS + " velocity + "
-            + JBox2dEngine.POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off; native Box2D 2.3.1 via JNI"
+            + JBox2dEngine.POSITION_ITERATIONS + " position iterations (Box2D's recommendation); "
+            + JBox2dEngine.sleepSettings(sleeping) + "; native Box2D 2.3.1 via JNI"
             + (particles.any() ? "; " + JBox2dEngine.PARTICLES : "");
     }
 

@@ -15,7 +15,8 @@ import org.jbox2d.dynamics.World;
 /**
  * JBox2D 2.2.1.1 (a Java port of Box2D 2.2) with Box2D's recommended 8 velocity and 3 position
  * iterations, continuous collision at its default (dynamic against static), warm starting on, and
- * sleeping off so a settled scene keeps being simulated. Metres via {@link PeerScene}.
+ * sleeping off so a settled scene keeps being simulated, unless the scene turns sleeping on
+ * ({@code world.sleeping}: then Box2D's own tolerances). Metres via {@link PeerScene}.
  */
 final class JBox2dEngine implements BenchEngine {
     /** Box2D's recommended velocity iterations. */
@@ -30,6 +31,7 @@ final class JBox2dEngine implements BenchEngine {
     private World world;
     private Body[] bodies;
     private float dt;
+    private boolean sleeping;
     private PeerParticles<Body> particles;
 
     @Override
@@ -42,7 +44,8 @@ final class JBox2dEngine implements BenchEngine {
         PeerScene scene = PeerScene.of(scenario, "jbox2d", Settings.maxPolygonVertices);
         dt = (float) scene.timestep;
         world = new World(new Vec2((float) scene.gravityX, (float) scene.gravityY));
-        world.setAllowSleep(false);
+        world.setAllowSleep(scene.sleeping);
+        sleeping = scene.sleeping;
         bodies = new Body[scene.bodies.size()];
         int i = 0;
         for (PeerScene.PeerBody pb : scene.bodies) {
@@ -54,7 +57,7 @@ final class JBox2dEngine implements BenchEngine {
             def.angularVelocity = (float) pb.omega;
             def.fixedRotation = !pb.rotatable;
             def.gravityScale = pb.gravity ? 1f : 0f;
-            def.allowSleep = false;
+            def.allowSleep = scene.sleeping && pb.sleepingAllowed;
             Body b = world.createBody(def);
             for (PeerScene.PeerShape part : pb.parts) {
                 FixtureDef fd = new FixtureDef();
@@ -198,10 +201,29 @@ final class JBox2dEngine implements BenchEngine {
     }
 
     @Override
+    public int sleepingCount() {
+        if (!sleeping) {
+            return -1;
+        }
+        int n = 0;
+        for (Body b : bodies) {
+            n += b.getType() == BodyType.DYNAMIC && !b.isAwake() ? 1 : 0;
+        }
+        return n;
+    }
+
+    @Override
     public String settings() {
         return "metres (20 px = 1 m); timestep " + dt + " s; " + VELOCITY_ITERATIONS + " velocity + "
-            + POSITION_ITERATIONS + " position iterations (Box2D's recommendation); sleeping off"
+            + POSITION_ITERATIONS + " position iterations (Box2D's recommendation); " + sleepSettings(sleeping)
             + (particles.any() ? "; " + PARTICLES : "");
+    }
+
+    /** The sleeping part of a Box2D adapter's settings line (Box2D 2.2 and 2.3 share the constants). */
+    static String sleepSettings(boolean on) {
+        return on ? String.format(java.util.Locale.ROOT, "sleeping on at Box2D's tolerances (%.2f m/s = %.1f px/s, "
+            + "%.1f deg/s, %.1f s)", Settings.linearSleepTolerance, Settings.linearSleepTolerance * PeerScene.PX_PER_M,
+            Math.toDegrees(Settings.angularSleepTolerance), Settings.timeToSleep) : "sleeping off";
     }
 
     @Override

@@ -43,6 +43,11 @@ final class PeerScene {
     final int iterations;
     final double gravityX;
     final double gravityY;
+    /**
+     * Whether the scene lets bodies sleep ({@code world.sleeping}): the peers then sleep at their own
+     * tolerances (bench/ENGINES.md, Sleeping); a scene that sets tolerances is refused.
+     */
+    final boolean sleeping;
     final List<PeerBody> bodies = new ArrayList<>();
     final List<PeerJoint> joints = new ArrayList<>();
     final List<PeerMotor> motors = new ArrayList<>();
@@ -195,6 +200,8 @@ final class PeerScene {
         final double omega;
         final boolean rotatable;
         final boolean gravity;
+        /** Whether the body may sleep ({@code sleepingAllowed}), when the scene lets bodies sleep. */
+        final boolean sleepingAllowed;
 
         PeerBody(String name, List<PeerShape> parts, BodySpec spec) {
             BodyState s = spec.state();
@@ -210,6 +217,7 @@ final class PeerScene {
             this.omega = -s.angularVelocity();
             this.rotatable = s.rotatable();
             this.gravity = s.gravity();
+            this.sleepingAllowed = s.sleepingAllowed();
         }
     }
 
@@ -218,6 +226,7 @@ final class PeerScene {
         iterations = s.world().iterations();
         gravityX = s.world().gravityX() / PX_PER_M;
         gravityY = -s.world().gravityY() / PX_PER_M;
+        sleeping = s.world().sleeping().enabled();
     }
 
     /**
@@ -237,6 +246,12 @@ final class PeerScene {
         }
         if (s.world().dampingLateral() != 0 || s.world().dampingRotational() != 0) {
             throw new UnsupportedSceneException("the " + engine + " adapter does not map per-tick damping");
+        }
+        org.emini.harness.scenario.SleepSpec sleep = s.world().sleeping();
+        if (sleep.enabled() && !(Double.isNaN(sleep.linearTolerance()) && Double.isNaN(sleep.angularTolerance())
+                && Double.isNaN(sleep.timeToSleep()))) {
+            throw new UnsupportedSceneException("the " + engine + " adapter sleeps at the engine's own tolerances; "
+                + "the scene sets Emini's (world.sleeping)");
         }
         PeerScene p = new PeerScene(s);
         Map<ShapeSpec, List<PeerShape>> shapes = new IdentityHashMap<>();

@@ -149,7 +149,7 @@ public class TickBenchmark {
         int np = e.particleCount();
         double[] particles = new double[2 * np];
         e.particlePositions(particles);
-        return Stability.judge(scenario, ticks, initial, now, speeds, omegas, particles, np);
+        return Stability.judge(scenario, ticks, initial, now, speeds, omegas, particles, np).withAsleep(e.sleepingCount());
     }
 
     private void write() {

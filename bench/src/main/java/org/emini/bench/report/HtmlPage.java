@@ -194,6 +194,10 @@ public final class HtmlPage {
         if (np instanceof Number && ((Number) np).intValue() > 0) {
             s.append(", ").append(num(np, "%.0f")).append(" particles");
         }
+        Object asleep = c.get("asleep");
+        if (asleep instanceof Number && ((Number) asleep).intValue() >= 0) {
+            s.append(", ").append(num(asleep, "%.0f")).append(" asleep");
+        }
         Object me = c.get("motorSpeedError");
         if (me instanceof Number && ((Number) me).doubleValue() != 0) {
             s.append(", container ω off by ").append(num(((Number) me).doubleValue() * 100, "%.2g")).append("%");

@@ -131,6 +131,9 @@ public final class MarkdownTables {
         if (num(c.get("particles")) > 0) {
             s.append(String.format(Locale.ROOT, ", %.0f particles", num(c.get("particles"))));
         }
+        if (c.get("asleep") instanceof Number && num(c.get("asleep")) >= 0) {
+            s.append(String.format(Locale.ROOT, ", %.0f asleep", num(c.get("asleep"))));
+        }
         if (c.get("motorSpeedError") instanceof Number && num(c.get("motorSpeedError")) != 0) {
             s.append(String.format(Locale.ROOT, ", container ω off by %.2g%%", num(c.get("motorSpeedError")) * 100));
         }

@@ -26,7 +26,8 @@ public final class BenchPlan {
         new Scene("bench/rain-5000", "rain: 5,000 mixed shapes into a container", null),
         new Scene("bench/joint-grid", "joint grid: a 30 x 30 net of balls, 1,740 pin joints", null),
         new Scene("bench/tumbler", "tumbler: 1,024 boxes and balls in a motor-driven rotating box", null),
-        new Scene("bench/particles-10000", "10,000 particles (the peers: 10,000 circle bodies)", null));
+        new Scene("bench/particles-10000", "10,000 particles (the peers: 10,000 circle bodies)", null),
+        new Scene("bench/game-level", "game level, sleeping on: 840 crates at rest, 7 pendulums and 2 players moving", null));
 
     /** Body counts of the scaling series (scene bench/rain-N). */
     public static final List<Integer> SCALING = List.of(100, 200, 500, 1000, 2000, 5000, 10000, 20000);

@@ -10,6 +10,7 @@ import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.BodyState;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.Section;
+import org.emini.harness.scenario.SleepSpec;
 import org.emini.harness.scenario.WorldSpec;
 import org.emini.shape.Shape;
 
@@ -67,6 +68,18 @@ public final class WorldBuilder {
             float v = e.getValue().floatValue();
             Located.at(p.key("solver").key(e.getKey()), () -> solver(s, e.getKey(), v));
         }
+        SleepSpec sleep = w.sleeping();
+        JsonPath sp = p.key("sleeping");
+        if (!Double.isNaN(sleep.linearTolerance())) {
+            Located.at(sp.key("linearTolerance"), () -> s.setSleepLinearTolerance((float) sleep.linearTolerance()));
+        }
+        if (!Double.isNaN(sleep.angularTolerance())) {
+            Located.at(sp.key("angularTolerance"), () -> s.setSleepAngularTolerance((float) sleep.angularTolerance()));
+        }
+        if (!Double.isNaN(sleep.timeToSleep())) {
+            Located.at(sp.key("timeToSleep"), () -> s.setTimeToSleep((float) sleep.timeToSleep()));
+        }
+        world.setSleepingEnabled(sleep.enabled());
     }
 
     private static void solver(SolverSettings s, String key, float v) {
@@ -98,6 +111,7 @@ public final class WorldBuilder {
         body.setRotatable(s.rotatable());
         body.setInteracting(s.interacting());
         body.setGravityAffected(s.gravity());
+        body.setSleepingAllowed(s.sleepingAllowed());
         for (int layer : s.layers()) {
             Located.at(key(spec, written, "layers"), () -> body.addCollisionLayer(layer));
         }

@@ -91,6 +91,7 @@ final class ExpandCommand implements Callable<Integer> {
             json.name("rotatable").value(st.rotatable());
             json.name("interacting").value(st.interacting());
             json.name("gravity").value(st.gravity());
+            json.name("sleepingAllowed").value(st.sleepingAllowed());
             json.name("layers").beginArray();
             for (int layer : st.layers()) {
                 json.value(layer);

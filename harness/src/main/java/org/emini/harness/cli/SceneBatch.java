@@ -66,6 +66,18 @@ final class SceneBatch implements AutoCloseable {
         return loaded;
     }
 
+    /**
+     * The scenes with sleeping forced on or off ({@code run --sleeping}), each keeping the tolerances
+     * it gives; invalid scenes stay as they are.
+     */
+    static List<ScenarioLoader.Loaded> withSleeping(List<ScenarioLoader.Loaded> scenes, boolean on) {
+        List<ScenarioLoader.Loaded> out = new ArrayList<>();
+        for (ScenarioLoader.Loaded l : scenes) {
+            out.add(l.ok() ? new ScenarioLoader.Loaded(l.file(), l.scenario().withSleeping(on), l.problems()) : l);
+        }
+        return out;
+    }
+
     /** A scene's result, once its run has ended; an invalid scene's is an ERROR naming its problems. */
     SceneResult result(ScenarioLoader.Loaded l) throws IOException, InterruptedException {
         if (!l.ok()) {
@@ -104,6 +116,6 @@ final class SceneBatch implements AutoCloseable {
             msg.append("\n    ").append(p);
         }
         return new SceneResult(l.file().toString(), l.file().toString(), null, Status.ERROR, msg.toString(),
-                List.of(), List.of(), null, 0, 0, 0, 0, 0, null);
+                List.of(), List.of(), null, 0, 0, 0, 0, 0, null, -1);
     }
 }

@@ -115,6 +115,9 @@ public final class ScenarioToWorld {
         if (!w.solver().isEmpty()) {
             notConverted.add("world solver settings " + w.solver().keySet());
         }
+        if (w.sleeping().enabled()) {
+            notConverted.add("world sleeping (the original engine has none)");
+        }
     }
 
     /** The shape-list index of a scene shape, adding it (and a multishape's parts) on first use. */
@@ -268,6 +271,9 @@ public final class ScenarioToWorld {
             layers |= 1 << layer;
         }
         b.setCollisionLayers(layers);
+        if (!s.sleepingAllowed()) {
+            notConverted.add("body " + spec.name() + ": sleepingAllowed false (the original engine has no sleeping)");
+        }
         b.setUserData(NAME_KEY + spec.name());
         bodies.put(spec.name(), doc.getBodies().size());
         doc.getBodies().add(b);

@@ -57,6 +57,7 @@ public final class DashboardWriter {
         JsonObject data = new JsonObject();
         JsonObject results = readJson(reports.resolve("results.json"));
         data.add("results", results);
+        data.add("sleeping", sleepingRun(readJson(reports.resolve("sleeping").resolve("results.json"))));
         data.add("compare", readJson(reports.resolve("compare").resolve("compare.json")));
         JsonObject stability = readJson(reports.resolve("stability").resolve("stability.json"));
         if (stability != null && stability.has("families")) {
@@ -115,6 +116,7 @@ public final class DashboardWriter {
                 entry.addProperty("scene", id);
                 entry.addProperty("file", "dashboard/" + file);
                 entry.addProperty("oracle", replay.has("oracle"));
+                entry.addProperty("sleeping", replay.getAsJsonObject("engine").has("sleeping"));
                 replays.add(entry);
             }
         }
@@ -169,7 +171,39 @@ public final class DashboardWriter {
         return out;
     }
 
-    /** Keeps time, x, y, angle of each body, at most MAX_FRAMES samples, rounded. */
+    /**
+     * The library run with sleeping forced on ({@code reports/sleeping/results.json}, written by
+     * {@code ./emini run}): its summary and each scene's status, message and how many bodies slept, or
+     * null when there is none.
+     */
+    static JsonObject sleepingRun(JsonObject results) {
+        if (results == null || !results.has("scenes")) {
+            return null;
+        }
+        JsonObject out = new JsonObject();
+        out.add("generated", results.get("generated"));
+        out.add("mode", results.get("sleeping"));
+        out.add("summary", results.get("summary"));
+        JsonArray scenes = new JsonArray();
+        for (JsonElement e : results.getAsJsonArray("scenes")) {
+            JsonObject s = e.getAsJsonObject();
+            JsonObject o = new JsonObject();
+            o.add("scene", s.get("scene"));
+            o.add("status", s.get("status"));
+            o.add("message", s.get("message"));
+            if (s.has("mostAsleep")) {
+                o.add("mostAsleep", s.get("mostAsleep"));
+            }
+            scenes.add(o);
+        }
+        out.add("scenes", scenes);
+        return out;
+    }
+
+    /**
+     * Keeps time, x, y, angle of each body, at most MAX_FRAMES samples, rounded; and, when the trace
+     * says which bodies slept, {@code s} per body (1 while asleep) and {@code sleeping: true}.
+     */
     static JsonObject thin(JsonObject trace) {
         JsonArray time = trace.getAsJsonArray("time");
         int n = time.size();
@@ -184,6 +218,10 @@ public final class DashboardWriter {
             c.add("x", pick(cols.getAsJsonArray("x"), step, 100));
             c.add("y", pick(cols.getAsJsonArray("y"), step, 100));
             c.add("a", pick(cols.getAsJsonArray("angle"), step, 10000));
+            if (cols.has("sleeping")) {
+                c.add("s", pick(cols.getAsJsonArray("sleeping"), step, 1));
+                out.addProperty("sleeping", true);
+            }
             bodies.add(b.getKey(), c);
         }
         out.add("bodies", bodies);

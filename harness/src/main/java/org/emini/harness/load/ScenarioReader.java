@@ -23,6 +23,7 @@ import org.emini.harness.scenario.RunSpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.Section;
 import org.emini.harness.scenario.ShapeSpec;
+import org.emini.harness.scenario.SleepSpec;
 import org.emini.harness.scenario.WorldSpec;
 
 /**
@@ -179,7 +180,19 @@ final class ScenarioReader {
                 damping != null && damping.has("lateral") ? damping.get("lateral").asDouble() : d.dampingLateral(),
                 damping != null && damping.has("rotational") ? damping.get("rotational").asDouble()
                         : d.dampingRotational(),
-                w.has("simulationArea"), solver);
+                w.has("simulationArea"), solver, sleeping(w.get("sleeping")));
+    }
+
+    /** {@code sleeping: true|false} or an object of tolerances (which turns it on). */
+    private static SleepSpec sleeping(JsonNode s) {
+        if (s == null) {
+            return SleepSpec.OFF;
+        }
+        if (s.isBoolean()) {
+            return SleepSpec.OFF.switched(s.asBoolean());
+        }
+        return new SleepSpec(true, num(s, "linearTolerance", Double.NaN), num(s, "angularTolerance", Double.NaN),
+                num(s, "timeToSleep", Double.NaN));
     }
 
     private ShapeSpec shapeRef(JsonNode node, JsonPath p) {
@@ -259,7 +272,8 @@ final class ScenarioReader {
         return new BodyState(isStatic, kinematic, angle, v[0], v[1], omega,
                 bool(b, "rotatable", true), bool(b, "interacting", true), bool(b, "gravity", true),
                 List.copyOf(layers), bits(b, "categories", BodyState.DEFAULT_CATEGORY_BITS),
-                bits(b, "mask", BodyState.DEFAULT_MASK_BITS), b.has("group") ? b.get("group").asInt() : 0);
+                bits(b, "mask", BodyState.DEFAULT_MASK_BITS), b.has("group") ? b.get("group").asInt() : 0,
+                bool(b, "sleepingAllowed", true));
     }
 
     /** A list of bit numbers (0..31) as a bit set, or the default when absent. */

@@ -48,6 +48,8 @@ public final class Metrics {
                 return new ConstraintErrorMetric(world.world());
             case particles:
                 return new ParticlesMetric(world, spec);
+            case sleeping:
+                return new SleepingMetric(world);
             default:
                 throw new UnsupportedElementException("metric " + spec.kind(),
                         spec.path() != null ? spec.path() : JsonPath.ROOT.key("run"));

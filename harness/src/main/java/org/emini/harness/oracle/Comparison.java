@@ -36,7 +36,8 @@ public final class Comparison {
             new String[] {"tunnelling.count", "final"},
             new String[] {"stability.maxSpeed", "max"},
             new String[] {"stability.maxAngularSpeed", "max"},
-            new String[] {"stability.nonFinite", "max"});
+            new String[] {"stability.nonFinite", "max"},
+            new String[] {"sleeping.count", "max"});
 
     private static final List<String> TRAJECTORY = List.of("x", "y", "angle", "vx", "vy", "omega");
 

@@ -57,10 +57,21 @@ public final class TraceReader {
         JsonObject metrics = doc.getAsJsonObject("metrics");
         List<String> bodyNames = new ArrayList<>(bodies.keySet());
         List<String> metricChannels = new ArrayList<>(metrics.keySet());
-        Trace trace = new Trace(timestep, bodyNames, metricChannels);
+        // Runs that let bodies sleep add a column "sleeping" (1 while asleep) to every body.
+        boolean sleeping = !bodyNames.isEmpty() && bodies.getAsJsonObject(bodyNames.get(0)).has("sleeping");
+        Trace trace = new Trace(timestep, bodyNames, metricChannels, sleeping);
         List<JsonArray> columns = new ArrayList<>();
+        List<JsonArray> asleep = new ArrayList<>();
         for (String b : bodyNames) {
             JsonObject body = bodies.getAsJsonObject(b);
+            if (sleeping) {
+                JsonArray c = body.getAsJsonArray("sleeping");
+                if (c == null || c.size() != ticks.size()) {
+                    throw new IOException(shown + ": body " + b + " has no sleeping column of " + ticks.size()
+                            + " values, as the first body has");
+                }
+                asleep.add(c);
+            }
             for (String f : Trace.BODY_FIELDS) {
                 JsonArray c = body.getAsJsonArray(f);
                 if (c == null) {
@@ -83,7 +94,15 @@ public final class TraceReader {
                 JsonElement v = col.get(i);
                 row[c] = v.isJsonNull() ? Double.NaN : v.getAsDouble();
             }
-            trace.add(ticks.get(i).getAsLong(), row);
+            if (!sleeping) {
+                trace.add(ticks.get(i).getAsLong(), row);
+                continue;
+            }
+            boolean[] flags = new boolean[asleep.size()];
+            for (int b = 0; b < flags.length; b++) {
+                flags[b] = asleep.get(b).get(i).getAsInt() != 0;
+            }
+            trace.add(ticks.get(i).getAsLong(), row, flags);
         }
         return new Read(string(doc, "scene"), string(doc, "source"), trace);
     }

@@ -26,6 +26,16 @@ public final class ResultsWriter {
      * @param traces the folder the traces went to (for relative links), or null if none were written
      */
     public static void write(Path file, List<SceneResult> results, Summary summary, Path traces) throws IOException {
+        write(file, results, summary, traces, null);
+    }
+
+    /**
+     * Writes the results of a run that forced sleeping on or off ({@code run --sleeping}).
+     *
+     * @param sleeping {@code on} or {@code off} as forced, or null when each scene had its own setting
+     */
+    public static void write(Path file, List<SceneResult> results, Summary summary, Path traces, String sleeping)
+            throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
         try (Writer out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
             JsonWriter json = new JsonWriter(out);
@@ -34,6 +44,9 @@ public final class ResultsWriter {
             json.name("format").value("emini-results");
             json.name("version").value(1);
             json.name("generated").value(Instant.now().toString());
+            if (sleeping != null) {
+                json.name("sleeping").value(sleeping);
+            }
             json.name("summary").beginObject();
             json.name("scenes").value(summary.total());
             json.name("pass").value(summary.pass());
@@ -68,6 +81,9 @@ public final class ResultsWriter {
         json.name("runMillis").value(round(r.runMillis()));
         if (r.ticks() > 0) {
             json.name("microsPerTick").value(round(r.microsPerTick()));
+        }
+        if (r.mostAsleep() >= 0) {
+            json.name("mostAsleep").value(r.mostAsleep());
         }
         if (trace != null && r.ticks() > 0) {
             json.name("trace").value(trace.toString().replace('\\', '/'));

@@ -62,11 +62,20 @@ public final class TraceWriter {
         }
         json.endArray();
         json.name("bodies").beginObject();
-        for (String body : trace.bodies()) {
+        for (int b = 0; b < trace.bodies().size(); b++) {
+            String body = trace.bodies().get(b);
             json.name(body).beginObject();
             for (String field : Trace.BODY_FIELDS) {
                 json.name(field);
                 column(json, trace.column(Channels.body(body, field)), true);
+            }
+            if (trace.recordsSleeping()) {
+                // 1 while the body sleeps; only in runs that let bodies sleep (readers ignore unknown fields).
+                json.name("sleeping").beginArray();
+                for (int i = 0; i < trace.size(); i++) {
+                    json.value(trace.sleeping(i, b) ? 1 : 0);
+                }
+                json.endArray();
             }
             json.endObject();
         }

@@ -58,7 +58,7 @@ public final class ScenarioRunner {
             metrics = Metrics.create(scenario.run().record().metrics(), built);
         } catch (UnsupportedElementException e) {
             progress.accept(ticks);
-            return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null);
+            return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null, -1);
         } catch (RuntimeException | OutOfMemoryError e) {
             progress.accept(ticks);
             return errorOrKnown(scenario, "building the world: " + e, 0, 0);
@@ -67,12 +67,16 @@ public final class ScenarioRunner {
         List<String> recorded = recordedBodies(scenario, built);
         List<String> metricChannels = new ArrayList<>();
         metrics.forEach(m -> metricChannels.addAll(m.channels()));
-        Trace trace = new Trace(scenario.world().timestep(), recorded, metricChannels);
-        Body[] bodies = recorded.stream().map(built::body).toArray(Body[]::new);
         World world = built.world();
+        Trace trace = new Trace(scenario.world().timestep(), recorded, metricChannels, world.isSleepingEnabled());
+        Body[] bodies = recorded.stream().map(built::body).toArray(Body[]::new);
         Schedule schedule = new Schedule(built, scenario.actions(), scenario.world().timestep());
         long every = samplingTicks(scenario.run().record(), scenario.world().timestep());
         long done = 0;
+        // With sleeping on, how many bodies slept at once (at the samples): shows a run let bodies sleep.
+        Body[] sleepers = world.isSleepingEnabled() ? built.bodies().values().stream().filter(Body::isDynamic)
+                .toArray(Body[]::new) : null;
+        int mostAsleep = sleepers == null ? -1 : 0;
         try {
             sample(trace, 0, bodies, metrics);
             for (long k = 0; k < ticks; k++) {
@@ -97,6 +101,9 @@ public final class ScenarioRunner {
                 }
                 if ((k + 1) % every == 0 || k + 1 == ticks) {
                     sample(trace, k + 1, bodies, metrics);
+                    if (sleepers != null) {
+                        mostAsleep = Math.max(mostAsleep, asleep(sleepers));
+                    }
                 }
                 if ((k & 63) == 63) {
                     progress.accept(64);
@@ -118,7 +125,8 @@ public final class ScenarioRunner {
         List<String> stale = new ArrayList<>();
         StringBuilder message = new StringBuilder();
         Status status = Judge.judge(verdicts, scenario.knownFailure(), stale, message);
-        return result(scenario, status, message.toString(), verdicts, stale, ticks, millis(t1 - t0), runMillis, trace);
+        return result(scenario, status, message.toString(), verdicts, stale, ticks, millis(t1 - t0), runMillis, trace,
+                mostAsleep);
     }
 
     /**
@@ -207,19 +215,36 @@ public final class ScenarioRunner {
             m.sample(row, i);
             i += m.channels().size();
         }
-        trace.add(tick, row);
+        if (!trace.recordsSleeping()) {
+            trace.add(tick, row);
+            return;
+        }
+        boolean[] asleep = new boolean[bodies.length];
+        for (int k = 0; k < bodies.length; k++) {
+            asleep[k] = bodies[k].isSleeping();
+        }
+        trace.add(tick, row, asleep);
     }
 
     private static SceneResult errorOrKnown(Scenario s, String message, double build, double run) {
         Status status = s.knownFailure() != null ? Status.KNOWN_FAILURE : Status.ERROR;
         String text = s.knownFailure() != null ? message + " [known: " + s.knownFailure().reason() + "]" : message;
-        return result(s, status, text, List.of(), List.of(), 0, build, run, null);
+        return result(s, status, text, List.of(), List.of(), 0, build, run, null, -1);
+    }
+
+    private static int asleep(Body[] bodies) {
+        int n = 0;
+        for (Body b : bodies) {
+            n += b.isSleeping() ? 1 : 0;
+        }
+        return n;
     }
 
     private static SceneResult result(Scenario s, Status status, String message, List<Verdict> verdicts,
-                                      List<String> stale, long ticks, double build, double run, Trace trace) {
+                                      List<String> stale, long ticks, double build, double run, Trace trace,
+                                      int mostAsleep) {
         return new SceneResult(s.name(), s.file(), s.category(), status, message, verdicts, stale, s.knownFailure(),
-                s.bodies().size(), ticks, s.world().timestep(), build, run, trace);
+                s.bodies().size(), ticks, s.world().timestep(), build, run, trace, mostAsleep);
     }
 
     private static double millis(long nanos) {

@@ -21,10 +21,13 @@ import org.emini.harness.scenario.KnownFailure;
  * @param buildMillis time to build the world
  * @param runMillis time to run the ticks, including metrics
  * @param trace the sampled run, or null when nothing ran
+ * @param mostAsleep the most dynamic bodies asleep at one sample, or -1 when the world did not let
+ *     bodies sleep (or nothing ran)
  */
 public record SceneResult(String scene, String file, String category, Status status, String message,
                           List<Verdict> verdicts, List<String> staleKnownFailures, KnownFailure knownFailure,
-                          int bodies, long ticks, double timestep, double buildMillis, double runMillis, Trace trace) {
+                          int bodies, long ticks, double timestep, double buildMillis, double runMillis, Trace trace,
+                          int mostAsleep) {
 
     /** Microseconds of wall time per tick (NaN when nothing ran). */
     public double microsPerTick() {
@@ -34,6 +37,6 @@ public record SceneResult(String scene, String file, String category, Status sta
     /** The same result without its trace (after the trace is written, to free memory). */
     public SceneResult withoutTrace() {
         return new SceneResult(scene, file, category, status, message, verdicts, staleKnownFailures, knownFailure,
-                bodies, ticks, timestep, buildMillis, runMillis, null);
+                bodies, ticks, timestep, buildMillis, runMillis, null, mostAsleep);
     }
 }

@@ -23,6 +23,8 @@ public final class Trace {
     private final List<double[]> rows = new ArrayList<>();
     private final List<Long> ticks = new ArrayList<>();
     private final double timestep;
+    /** Per sample, whether each recorded body slept; null when the run did not let bodies sleep. */
+    private final List<boolean[]> asleep;
 
     /**
      * @param timestep seconds per tick (time of a sample = tick × timestep)
@@ -30,7 +32,19 @@ public final class Trace {
      * @param metricChannels metric channels, in order
      */
     public Trace(double timestep, List<String> bodies, List<String> metricChannels) {
+        this(timestep, bodies, metricChannels, false);
+    }
+
+    /**
+     * @param timestep seconds per tick (time of a sample = tick × timestep)
+     * @param bodies names of the recorded bodies
+     * @param metricChannels metric channels, in order
+     * @param sleeping whether each sample also says which recorded bodies slept (a world that lets
+     *     bodies sleep); not a channel: expectations read the {@code sleeping} metric
+     */
+    public Trace(double timestep, List<String> bodies, List<String> metricChannels, boolean sleeping) {
         this.timestep = timestep;
+        this.asleep = sleeping ? new ArrayList<>() : null;
         this.bodies = List.copyOf(bodies);
         this.metricChannels = List.copyOf(metricChannels);
         for (String b : bodies) {
@@ -51,8 +65,40 @@ public final class Trace {
         if (row.length != channels.size()) {
             throw new IllegalArgumentException("row of " + row.length + " values for " + channels.size() + " channels");
         }
+        if (asleep != null) {
+            throw new IllegalArgumentException("this trace records sleeping: give which bodies slept");
+        }
         ticks.add(tick);
         rows.add(row);
+    }
+
+    /**
+     * Appends a sample of a trace that records sleeping.
+     *
+     * @param row one value per channel, in channel order
+     * @param sleeping one flag per recorded body, in order: whether it slept
+     */
+    public void add(long tick, double[] row, boolean[] sleeping) {
+        if (asleep == null) {
+            throw new IllegalArgumentException("this trace does not record sleeping");
+        }
+        if (row.length != channels.size() || sleeping.length != bodies.size()) {
+            throw new IllegalArgumentException("row of " + row.length + " values and " + sleeping.length
+                    + " sleeping flags for " + channels.size() + " channels and " + bodies.size() + " bodies");
+        }
+        ticks.add(tick);
+        rows.add(row);
+        asleep.add(sleeping);
+    }
+
+    /** Whether the samples say which bodies slept. */
+    public boolean recordsSleeping() {
+        return asleep != null;
+    }
+
+    /** Whether recorded body {@code body} (its index in {@link #bodies()}) slept at sample i. */
+    public boolean sleeping(int i, int body) {
+        return asleep != null && asleep.get(i)[body];
     }
 
     /** Every channel, bodies first. */

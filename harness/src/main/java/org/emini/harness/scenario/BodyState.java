@@ -20,17 +20,18 @@ import java.util.List;
  * @param categoryBits Box2D's category bits
  * @param maskBits Box2D's mask bits
  * @param group Box2D's group index
+ * @param sleepingAllowed whether the body may fall asleep when the world lets bodies sleep (default true)
  */
 public record BodyState(boolean isStatic, boolean kinematic, double angle, double vx, double vy, double angularVelocity,
                         boolean rotatable, boolean interacting, boolean gravity, List<Integer> layers,
-                        int categoryBits, int maskBits, int group) {
+                        int categoryBits, int maskBits, int group, boolean sleepingAllowed) {
     /** The category bits of a body that gives none: bit 0. */
     public static final int DEFAULT_CATEGORY_BITS = 1;
     /** The mask bits of a body that gives none: all. */
     public static final int DEFAULT_MASK_BITS = -1;
     /** The manual's defaults. */
     public static final BodyState DEFAULT = new BodyState(false, false, 0, 0, 0, 0, true, true, true, List.of(),
-            DEFAULT_CATEGORY_BITS, DEFAULT_MASK_BITS, 0);
+            DEFAULT_CATEGORY_BITS, DEFAULT_MASK_BITS, 0, true);
 
     /**
      * The same state at another angle.
@@ -40,7 +41,7 @@ public record BodyState(boolean isStatic, boolean kinematic, double angle, doubl
      */
     public BodyState withAngle(double a) {
         return new BodyState(isStatic, kinematic, a, vx, vy, angularVelocity, rotatable, interacting, gravity, layers,
-                categoryBits, maskBits, group);
+                categoryBits, maskBits, group, sleepingAllowed);
     }
 
     /**

@@ -23,7 +23,8 @@ public final class Channels {
             MetricSpec.Kind.constraintError, List.of("constraintError.max", "constraintError.mean"),
             MetricSpec.Kind.tunnelling, List.of("tunnelling.count"),
             MetricSpec.Kind.stability, List.of("stability.maxSpeed", "stability.maxAngularSpeed", "stability.nonFinite"),
-            MetricSpec.Kind.particles, List.of("particles.count", "particles.outside"));
+            MetricSpec.Kind.particles, List.of("particles.count", "particles.outside"),
+            MetricSpec.Kind.sleeping, List.of("sleeping.count", "sleeping.fraction"));
 
     /** The metric producing a channel, or null for a body channel or an unknown name. */
     public static MetricSpec.Kind metricOf(String channel) {

@@ -42,6 +42,15 @@ public record Scenario(String name, String file, String description, String cate
                 closedForm, oracle, knownFailure);
     }
 
+    /**
+     * The same scene with sleeping forced on or off, keeping the tolerances it gives (the harness's
+     * {@code run --sleeping}).
+     */
+    public Scenario withSleeping(boolean on) {
+        return new Scenario(name, file, description, category, world.withSleeping(world.sleeping().switched(on)),
+                shapes, bodies, actions, elements, run, closedForm, oracle, knownFailure);
+    }
+
     /** Number of ticks the run takes. */
     public long ticks() {
         return (long) Math.ceil(run.duration() / world.timestep() - 1e-9);

@@ -14,10 +14,18 @@ import java.util.Map;
  * @param dampingRotational fraction of angular velocity removed per tick (default 0)
  * @param hasSimulationArea whether the scene limits the simulated x range (not yet in the engine)
  * @param solver engine tunables the scene sets, by SolverSettings name
+ * @param sleeping whether bodies may fall asleep, with the tolerances the scene sets (default off)
  */
 public record WorldSpec(double timestep, int iterations, boolean dynamicIterations, double gravityX,
                         double gravityY, double dampingLateral, double dampingRotational,
-                        boolean hasSimulationArea, Map<String, Double> solver) {
+                        boolean hasSimulationArea, Map<String, Double> solver, SleepSpec sleeping) {
     /** The manual's world. */
-    public static final WorldSpec DEFAULT = new WorldSpec(1.0 / 20, 10, false, 0, 100, 0, 0, false, Map.of());
+    public static final WorldSpec DEFAULT = new WorldSpec(1.0 / 20, 10, false, 0, 100, 0, 0, false, Map.of(),
+            SleepSpec.OFF);
+
+    /** The same world with another sleeping setting. */
+    public WorldSpec withSleeping(SleepSpec newSleeping) {
+        return new WorldSpec(timestep, iterations, dynamicIterations, gravityX, gravityY, dampingLateral,
+                dampingRotational, hasSimulationArea, solver, newSleeping);
+    }
 }

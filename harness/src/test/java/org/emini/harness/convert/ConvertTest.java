@@ -145,7 +145,7 @@ class ConvertTest {
         // hex turns at +1 rad/s (growing angle): stored with the original's sign.
         assertEquals(-PhyFixed.FX2_ONE, w.getBodies().get(2).getAngularVelocityRaw());
         String notes = String.join("\n", r.notConverted()) + "\n" + String.join("\n", r.approximated());
-        for (String expected : List.of("world timestep", "world solver settings", "world.simulationArea",
+        for (String expected : List.of("world timestep", "world solver settings", "world sleeping", "world.simulationArea",
                 "action at 1 s: impulse on ball", "damping 0.5 is not stored", "run, record, expectations")) {
             assertTrue(notes.contains(expected), expected + " in\n" + notes);
         }
