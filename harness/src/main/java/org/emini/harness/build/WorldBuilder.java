@@ -64,7 +64,15 @@ public final class WorldBuilder {
         Located.at(p.key("damping").key("lateral"), () -> world.setDampingLateral((float) w.dampingLateral()));
         Located.at(p.key("damping").key("rotational"), () -> world.setDampingRotational((float) w.dampingRotational()));
         SolverSettings s = world.getSolverSettings();
+        // The length scale first: it scales the tolerances, including those the scene sets after it.
+        Double scale = w.solver().get("lengthScale");
+        if (scale != null) {
+            Located.at(p.key("solver").key("lengthScale"), () -> s.setLengthScale(scale.floatValue()));
+        }
         for (Map.Entry<String, Double> e : w.solver().entrySet()) {
+            if (e.getKey().equals("lengthScale")) {
+                continue;
+            }
             float v = e.getValue().floatValue();
             Located.at(p.key("solver").key(e.getKey()), () -> solver(s, e.getKey(), v));
         }
