@@ -224,6 +224,7 @@ def build(scene: Scene) -> Built:
             sh.friction = spec.shape.friction
             sh.elasticity = spec.shape.elasticity
             sh.filter = filters(spec)
+            sh.sensor = s.sensor
             shapes.append(sh)
         space.add(body, *shapes)
         if not s.static and not s.sleeping_allowed:

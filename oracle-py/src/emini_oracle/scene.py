@@ -100,6 +100,7 @@ class BodyState:
     mask: int = 0xFFFFFFFF
     group: int = 0
     sleeping_allowed: bool = True
+    sensor: bool = False
 
     def with_angle(self, angle):
         return dataclasses.replace(self, angle=angle)
@@ -125,6 +126,8 @@ class Body:
                "shape": self.shape.to_json()}
         if s.kinematic:
             out["kinematic"] = True
+        if s.sensor:
+            out["sensor"] = True
         if not s.default_filter():
             out["categories"] = _bit_list(s.categories)
             out["mask"] = _bit_list(s.mask)
@@ -505,7 +508,8 @@ class _Reader:
                          gravity=bool(b.get("gravity", True)), layers=tuple(int(x) for x in b.get("layers") or []),
                          kinematic=kinematic, categories=_bits(b.get("categories"), 1),
                          mask=_bits(b.get("mask"), 0xFFFFFFFF), group=int(b.get("group", 0)),
-                         sleeping_allowed=bool(b.get("sleepingAllowed", True)))
+                         sleeping_allowed=bool(b.get("sleepingAllowed", True)),
+                         sensor=bool(b.get("sensor", False)))
 
     def generator(self, g, path):
         shapes = []

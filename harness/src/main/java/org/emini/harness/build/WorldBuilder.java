@@ -120,6 +120,7 @@ public final class WorldBuilder {
         body.setInteracting(s.interacting());
         body.setGravityAffected(s.gravity());
         body.setSleepingAllowed(s.sleepingAllowed());
+        body.setSensor(s.sensor());
         for (int layer : s.layers()) {
             Located.at(key(spec, written, "layers"), () -> body.addCollisionLayer(layer));
         }

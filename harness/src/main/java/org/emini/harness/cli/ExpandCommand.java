@@ -80,6 +80,9 @@ final class ExpandCommand implements Callable<Integer> {
             if (st.kinematic()) {
                 json.name("kinematic").value(true);
             }
+            if (st.sensor()) {
+                json.name("sensor").value(true);
+            }
             if (!st.defaultFilter()) {
                 bitList(json.name("categories"), st.categoryBits());
                 bitList(json.name("mask"), st.maskBits());

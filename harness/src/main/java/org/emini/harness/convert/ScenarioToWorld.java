@@ -257,6 +257,9 @@ public final class ScenarioToWorld {
         if (!s.defaultFilter()) {
             throw new Skip("categories, mask or group (the original has layers only)");
         }
+        if (s.sensor()) {
+            throw new Skip("a sensor body (the original's sensors are events, not bodies)");
+        }
         PhyBody b = new PhyBody();
         b.setShapeIndex(shape(spec.shape()));
         b.setPosition(vec(spec.x(), spec.y()));

@@ -273,7 +273,7 @@ final class ScenarioReader {
                 bool(b, "rotatable", true), bool(b, "interacting", true), bool(b, "gravity", true),
                 List.copyOf(layers), bits(b, "categories", BodyState.DEFAULT_CATEGORY_BITS),
                 bits(b, "mask", BodyState.DEFAULT_MASK_BITS), b.has("group") ? b.get("group").asInt() : 0,
-                bool(b, "sleepingAllowed", true));
+                bool(b, "sleepingAllowed", true), bool(b, "sensor", false));
     }
 
     /** A list of bit numbers (0..31) as a bit set, or the default when absent. */

@@ -21,17 +21,19 @@ import java.util.List;
  * @param maskBits Box2D's mask bits
  * @param group Box2D's group index
  * @param sleepingAllowed whether the body may fall asleep when the world lets bodies sleep (default true)
+ * @param sensor whether the body is a sensor: collides with nothing, reports what overlaps it (default false)
  */
 public record BodyState(boolean isStatic, boolean kinematic, double angle, double vx, double vy, double angularVelocity,
                         boolean rotatable, boolean interacting, boolean gravity, List<Integer> layers,
-                        int categoryBits, int maskBits, int group, boolean sleepingAllowed) {
+                        int categoryBits, int maskBits, int group, boolean sleepingAllowed,
+                        boolean sensor) {
     /** The category bits of a body that gives none: bit 0. */
     public static final int DEFAULT_CATEGORY_BITS = 1;
     /** The mask bits of a body that gives none: all. */
     public static final int DEFAULT_MASK_BITS = -1;
     /** The manual's defaults. */
     public static final BodyState DEFAULT = new BodyState(false, false, 0, 0, 0, 0, true, true, true, List.of(),
-            DEFAULT_CATEGORY_BITS, DEFAULT_MASK_BITS, 0, true);
+            DEFAULT_CATEGORY_BITS, DEFAULT_MASK_BITS, 0, true, false);
 
     /**
      * The same state at another angle.
@@ -41,7 +43,7 @@ public record BodyState(boolean isStatic, boolean kinematic, double angle, doubl
      */
     public BodyState withAngle(double a) {
         return new BodyState(isStatic, kinematic, a, vx, vy, angularVelocity, rotatable, interacting, gravity, layers,
-                categoryBits, maskBits, group, sleepingAllowed);
+                categoryBits, maskBits, group, sleepingAllowed, sensor);
     }
 
     /**
