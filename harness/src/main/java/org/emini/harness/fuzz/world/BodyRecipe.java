@@ -30,4 +30,14 @@ public final class BodyRecipe {
     public boolean gravity = true;
     /** Collision layer bits (bodies sharing one do not collide). */
     public int layers;
+    /** Box2D's filter: category bits, mask bits, group index (defaults change nothing). */
+    public int categories = 1;
+    /** Box2D's filter. */
+    public int mask = -1;
+    /** Box2D's filter. */
+    public int group;
+    /** A sensor: collides with nothing, reports overlaps. */
+    public boolean sensor;
+    /** May fall asleep (when the world lets bodies sleep). */
+    public boolean sleepingAllowed = true;
 }

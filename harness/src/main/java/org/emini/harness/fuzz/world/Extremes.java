@@ -18,6 +18,10 @@ final class Extremes {
 
     private static void change(Rand rand, Recipe r, int which) {
         BodyRecipe b = r.bodies.isEmpty() ? null : r.bodies.get((int) (rand.unit() * r.bodies.size()));
+        if (b != null && !b.dynamic) {
+            // Static bodies take no velocity.
+            b = null;
+        }
         switch (which) {
             case 0 -> {
                 if (b != null) {

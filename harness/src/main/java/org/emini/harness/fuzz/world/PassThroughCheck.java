@@ -42,6 +42,10 @@ final class PassThroughCheck implements TickCheck {
         World world = w.world();
         for (int i = 0; i < world.getBodyCount(); i++) {
             Body b = world.getBody(i);
+            if (b.isSensor()) {
+                // Passes through everything, and everything through it, by design.
+                continue;
+            }
             if (b.isDynamic()) {
                 movers.add(b);
                 float[] core = ShapeDepth.core(b.getShape());
@@ -82,7 +86,8 @@ final class PassThroughCheck implements TickCheck {
         for (int k = 0; k < walls.size(); k++) {
             Body s = walls.get(k);
             float[] box = wallBoxes.get(k);
-            if ((s.getCollisionLayers() & b.getCollisionLayers()) != 0 || !w.inWorld(s) || links.linked(b, s)
+            if ((s.getCollisionLayers() & b.getCollisionLayers()) != 0 || !filterAllows(b, s) || !w.inWorld(s)
+                    || links.linked(b, s)
                     || Math.max(p[0], q[0]) < box[0] || Math.min(p[0], q[0]) > box[2]
                     || Math.max(p[1], q[1]) < box[1] || Math.min(p[1], q[1]) > box[3]) {
                 continue;
@@ -101,6 +106,14 @@ final class PassThroughCheck implements TickCheck {
             }
         }
         return null;
+    }
+
+    /** Box2D's filter rule, as the engine applies it beside the layers. */
+    static boolean filterAllows(Body a, Body b) {
+        if (a.getGroupIndex() == b.getGroupIndex() && a.getGroupIndex() != 0) {
+            return a.getGroupIndex() > 0;
+        }
+        return (a.getMaskBits() & b.getCategoryBits()) != 0 && (a.getCategoryBits() & b.getMaskBits()) != 0;
     }
 
     private static Violation landscape(FuzzWorld w, int tick, Body b, double[] p, double[] q) {

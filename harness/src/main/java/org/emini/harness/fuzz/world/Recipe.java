@@ -24,6 +24,8 @@ public final class Recipe {
     public int iterations = 10;
     /** Whether the solver stops once converged. */
     public boolean dynamicIterations;
+    /** Whether resting bodies fall asleep. */
+    public boolean sleeping;
     /** Gravity (px/s²). */
     public float gravityX;
     /** Gravity (px/s²). */

@@ -29,6 +29,7 @@ public final class RecipeBuilder {
     /** Builds the world. Engine refusals (IllegalArgumentException) pass through. */
     public static FuzzWorld build(Recipe r) {
         World world = new World();
+        world.setSleepingEnabled(r.sleeping);
         world.setTimestep(r.timestep());
         world.setConstraintIterations(r.iterations);
         world.setConstraintIterationDynamic(r.dynamicIterations);
@@ -85,9 +86,17 @@ public final class RecipeBuilder {
                 body.addCollisionLayer(k);
             }
         }
+        body.setCategoryBits(b.categories);
+        body.setMaskBits(b.mask);
+        body.setGroupIndex(b.group);
+        body.setSensor(b.sensor);
+        body.setSleepingAllowed(b.sleepingAllowed);
         body.setAngle(b.angle);
-        body.setVelocity(b.vx, b.vy);
-        body.setAngularVelocity(b.omega);
+        if (b.dynamic) {
+            // A static body refuses a velocity (the original ignored it).
+            body.setVelocity(b.vx, b.vy);
+            body.setAngularVelocity(b.omega);
+        }
         body.setBullet(b.bullet);
         return body;
     }

@@ -127,6 +127,9 @@ public final class SceneText {
         Map<String, Object> w = obj("ticksPerSecond", r.ticksPerSecond, "iterations", r.iterations,
                 "dynamicIterations", r.dynamicIterations, "gravity", vec(r.gravityX, r.gravityY),
                 "damping", obj("lateral", (double) r.dampingLateral, "rotational", (double) r.dampingRotational));
+        if (r.sleeping) {
+            w.put("sleeping", true);
+        }
         if (r.area != null) {
             w.put("simulationArea", r.area.range ? obj("start", (double) r.area.minX, "end", (double) r.area.maxX)
                     : obj("min", vec(r.area.minX, r.area.minY), "max", vec(r.area.maxX, r.area.maxY)));
@@ -165,8 +168,19 @@ public final class SceneText {
 
     private static Map<String, Object> body(BodyRecipe b) {
         Map<String, Object> m = obj("name", "b" + b.id, "shape", "s" + b.shape, "position", vec(b.x, b.y),
-                "static", !b.dynamic, "angle", (double) b.angle, "velocity", vec(b.vx, b.vy),
-                "angularVelocity", (double) b.omega);
+                "static", !b.dynamic, "angle", (double) b.angle, "velocity", b.dynamic ? vec(b.vx, b.vy) : vec(0, 0),
+                "angularVelocity", b.dynamic ? (double) b.omega : 0.0);
+        if (b.sensor) {
+            m.put("sensor", true);
+        }
+        if (!b.sleepingAllowed) {
+            m.put("sleepingAllowed", false);
+        }
+        if (b.categories != 1 || b.mask != -1 || b.group != 0) {
+            m.put("categories", bits(b.categories));
+            m.put("mask", bits(b.mask));
+            m.put("group", b.group);
+        }
         m.put("rotatable", b.rotatable);
         m.put("interacting", b.interacting);
         m.put("gravity", b.gravity);
@@ -180,6 +194,16 @@ public final class SceneText {
             m.put("layers", layers);
         }
         return m;
+    }
+
+    private static List<Object> bits(int set) {
+        List<Object> out = new ArrayList<>();
+        for (int k = 0; k < 32; k++) {
+            if ((set & (1 << k)) != 0) {
+                out.add(k);
+            }
+        }
+        return out;
     }
 
     private static Map<String, Object> joint(JointRecipe j) {

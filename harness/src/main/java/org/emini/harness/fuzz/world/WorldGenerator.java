@@ -81,6 +81,8 @@ public final class WorldGenerator {
             r.dampingLateral = rand.factor(0.05);
             r.dampingRotational = rand.factor(0.05);
         }
+        // Features a scene file and a world file do not share (SCENE worlds go through both).
+        r.sleeping = !f.sceneOnly() && rand.chance(0.3);
     }
 
     private static BodyRecipe dynamicBody(Rand rand, ShapeRecipe shape, float half, Features f) {
@@ -100,6 +102,15 @@ public final class WorldGenerator {
         b.gravity = !rand.chance(0.08);
         if (rand.chance(0.15)) {
             b.layers = 1 << rand.between(0, 2);
+        }
+        if (!f.sceneOnly()) {
+            if (rand.chance(0.1)) {
+                b.categories = 1 << rand.between(0, 3);
+                b.mask = ~(1 << rand.between(0, 3));
+                b.group = rand.pick(-1, 0, 0, 1);
+            }
+            b.sensor = rand.chance(0.03);
+            b.sleepingAllowed = !rand.chance(0.05);
         }
         return b;
     }
