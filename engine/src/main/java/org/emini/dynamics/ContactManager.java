@@ -376,25 +376,8 @@ final class ContactManager implements PairCallback, QueryCallback {
      * proportional to those bodies' contacts, not to all contacts.
      */
     void gather(Body[] bodies, int n, long tick) {
-        int k = 0;
-        for (int i = 0; i < n; i++) {
-            Body b = bodies[i];
-            for (Contact c = b.contactList; c != null; c = c.next(b)) {
-                if (c.gathered != tick) {
-                    c.gathered = tick;
-                    if (k == keys.length) {
-                        keys = Arrays.copyOf(keys, 2 * k);
-                    }
-                    keys[k++] = c.index;
-                }
-            }
-        }
-        HeapSort.sort(keys, k);
-        ensureActive(k);
-        for (int i = 0; i < k; i++) {
-            active[i] = contacts[(int) keys[i]];
-        }
-        activeCount = k;
+        activeCount = 0;
+        gatherMore(bodies, n, tick);
     }
 
     /**
