@@ -18,7 +18,8 @@ final class Sleep {
     private boolean enabled;
     private int[] parent = new int[16];
     private boolean[] restless = new boolean[16];
-    private Body[] woken = new Body[16];
+    // The last body linked into each resting island's ring, by root.
+    private Body[] ringTail = new Body[16];
 
     boolean isEnabled() {
         return enabled;
@@ -133,7 +134,6 @@ final class Sleep {
                 // Bodies of a constraint that does not name them stay awake.
                 for (int k = 0; k < count; k++) {
                     if (c.concernsBody(simulated[k])) {
-                        restless[find(k)] = true;
                         restless[k] = true;
                     }
                 }
@@ -151,8 +151,8 @@ final class Sleep {
             }
         }
         // Link each resting island's bodies into a ring, in world order, through its root.
-        if (woken.length < count) {
-            woken = new Body[Math.max(count, 2 * woken.length)];
+        if (ringTail.length < count) {
+            ringTail = new Body[Math.max(count, 2 * ringTail.length)];
         }
         for (int i = 0; i < count; i++) {
             int root = find(i);
@@ -160,21 +160,21 @@ final class Sleep {
                 continue;
             }
             Body b = simulated[i];
-            Body head = woken[root];
-            if (head == null) {
-                woken[root] = b;
+            Body tail = ringTail[root];
+            if (tail == null) {
+                ringTail[root] = b;
                 b.sleepNext = b;
             } else {
-                b.sleepNext = head.sleepNext;
-                head.sleepNext = b;
-                woken[root] = b;
+                b.sleepNext = tail.sleepNext;
+                tail.sleepNext = b;
+                ringTail[root] = b;
             }
             b.sleeping = true;
             b.vx = 0f;
             b.vy = 0f;
             b.w = 0f;
         }
-        Arrays.fill(woken, 0, count, null);
+        Arrays.fill(ringTail, 0, count, null);
     }
 
     private void union(Body a, Body b) {
