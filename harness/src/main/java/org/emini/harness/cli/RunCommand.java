@@ -61,6 +61,12 @@ final class RunCommand implements Callable<Integer> {
                     + "library with sleeping on as well as off.")
     Sleeping sleeping;
 
+    @Option(names = "--scale", paramLabel = "K",
+            description = "Run every scene at K times its size: lengths, speeds, gravity and the engine's length "
+                    + "scale times K, each bound times K to the power of its unit's length (harness/README.md, "
+                    + "Scaled runs). ./emini run runs the stacking and fast-body scenes at 0.025 and 25.")
+    Double scale;
+
     @Option(names = "--progress", negatable = true,
             description = "Show a progress bar (default: when the output is a terminal).")
     Boolean progress;
@@ -77,6 +83,10 @@ final class RunCommand implements Callable<Integer> {
         List<ScenarioLoader.Loaded> loaded = SceneBatch.load(library.loader(), library.files(spec, paths));
         if (sleeping != Sleeping.scene) {
             loaded = SceneBatch.withSleeping(loaded, sleeping == Sleeping.on);
+        }
+        if (scale != null) {
+            Options.require(spec, scale > 0 && !scale.isInfinite(), "--scale must be finite and > 0, was " + scale);
+            loaded = SceneBatch.scaled(loaded, scale);
         }
         long totalTicks = 0;
         int width = 10;

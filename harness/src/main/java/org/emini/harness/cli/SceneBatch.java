@@ -18,6 +18,7 @@ import org.emini.harness.report.TraceWriter;
 import org.emini.harness.run.SceneResult;
 import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.run.Status;
+import org.emini.harness.scenario.SceneScaling;
 
 /**
  * The engine's side of {@code run} and {@code compare}: every valid scene run on a pool of threads
@@ -74,6 +75,27 @@ final class SceneBatch implements AutoCloseable {
         List<ScenarioLoader.Loaded> out = new ArrayList<>();
         for (ScenarioLoader.Loaded l : scenes) {
             out.add(l.ok() ? new ScenarioLoader.Loaded(l.file(), l.scenario().withSleeping(on), l.problems()) : l);
+        }
+        return out;
+    }
+
+    /**
+     * The scenes at k times their size ({@code run --scale}, {@link SceneScaling}); a scene the scaling
+     * does not cover becomes invalid, with the reason.
+     */
+    static List<ScenarioLoader.Loaded> scaled(List<ScenarioLoader.Loaded> scenes, double k) {
+        List<ScenarioLoader.Loaded> out = new ArrayList<>();
+        for (ScenarioLoader.Loaded l : scenes) {
+            if (!l.ok()) {
+                out.add(l);
+                continue;
+            }
+            try {
+                out.add(new ScenarioLoader.Loaded(l.file(), SceneScaling.scale(l.scenario(), k), l.problems()));
+            } catch (IllegalArgumentException e) {
+                out.add(new ScenarioLoader.Loaded(l.file(), null, List.of(new Problem(l.scenario().file(), 0, 0, "$",
+                        "--scale " + k + ": " + e.getMessage()))));
+            }
         }
         return out;
     }
