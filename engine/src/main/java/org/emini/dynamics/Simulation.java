@@ -1,10 +1,12 @@
 package org.emini.dynamics;
 
+import java.util.concurrent.ThreadFactory;
 import org.emini.collision.BroadPhase;
 import org.emini.collision.QueryCallback;
 import org.emini.internal.ChangeQueue;
 import org.emini.internal.Check;
 import org.emini.internal.ElementList;
+import org.emini.internal.WorkerPool;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
@@ -86,6 +88,9 @@ public abstract class Simulation {
     final ProxySync proxies;
     private final ContactManager contacts = new ContactManager(this);
     final Solver solver = new Solver(this);
+    /** The most threads {@link #setWorkerCount} takes. */
+    public static final int MAX_WORKERS = 64;
+    private WorkerPool pool;
     private final ElementList<Constraint> constraints = new ElementList<Constraint>(changes, new Constraint[8], "Constraint",
         "constraint");
     private Landscape landscape = new Landscape();
@@ -1096,6 +1101,58 @@ public abstract class Simulation {
      */
     public void setSleepingEnabled(boolean enabled) {
         sleep.setEnabled(enabled, this);
+    }
+
+    /**
+     * Shares each tick's contact solve with worker threads (1, the default, for none). The contacts
+     * are solved colour by colour, so that the contacts of one colour share no moving body, and a
+     * colour is split among the threads: the results are bit for bit those of one thread, for any
+     * count. Only the contact passes are shared (not the narrowphase, the joints or the integration),
+     * and only colours of at least 256 contacts; the threads spin between the passes and park between
+     * ticks. Measured on a 2-core virtual machine the gain is not reliable yet (ten 20-row pyramids
+     * 0.6 to 1.25 times the one-thread speed, rain of 10,000 bodies 0.8 to 1.05): try it on the
+     * target device. Call with 1 to stop the threads when the world is no longer used.
+     *
+     * @param workers the threads that share the solve, counting the one that calls {@link #tick()}:
+     *     1 to 64
+     * @param factory makes the worker threads, or null for daemon threads named
+     *     {@code emini-worker-N}
+     */
+    public void setWorkerCount(int workers, ThreadFactory factory) {
+        if (changes.isOpen()) {
+            throw new IllegalStateException("World.setWorkerCount: called during a tick; call it between ticks");
+        }
+        if (workers < 1 || workers > MAX_WORKERS) {
+            throw new IllegalArgumentException("World.setWorkerCount: workers must be 1 to " + MAX_WORKERS + ", was "
+                + workers);
+        }
+        if (pool != null) {
+            pool.close();
+            pool = null;
+        }
+        if (workers > 1) {
+            pool = new WorkerPool(workers, factory);
+        }
+        solver.setPool(pool);
+    }
+
+    /**
+     * Shares each tick's contact solve with daemon worker threads: see
+     * {@link #setWorkerCount(int, ThreadFactory)}.
+     *
+     * @param workers the threads that share the solve, counting the calling one: 1 to 64
+     */
+    public void setWorkerCount(int workers) {
+        setWorkerCount(workers, null);
+    }
+
+    /**
+     * The threads that share the contact solve, counting the calling one.
+     *
+     * @return 1 when the world solves alone
+     */
+    public int getWorkerCount() {
+        return pool == null ? 1 : pool.getThreadCount();
     }
 
     /**

@@ -1,6 +1,7 @@
 package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
+import org.emini.internal.WorkerPool;
 
 /**
  * The solve of one tick: the soft step of Box2D v3 (Catto's "solver2d" study) on flat copies of the
@@ -33,6 +34,16 @@ final class Solver {
         this.world = world;
         step = new SolverStep(bodies, world);
         continuous = new ContinuousSolver(world);
+    }
+
+    /** Shares the contact passes with a pool's threads, or not (null). */
+    void setPool(WorkerPool pool) {
+        contacts.setPool(pool);
+    }
+
+    /** The fewest contacts of a colour given to a thread (tests split every colour with 1). */
+    void setMinParallelPart(int contacts) {
+        this.contacts.minPart = contacts;
     }
 
     boolean isSolving() {

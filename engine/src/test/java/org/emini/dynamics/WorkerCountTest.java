@@ -1,0 +1,82 @@
+package org.emini.dynamics;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.emini.EverythingScene;
+import org.emini.shape.Shape;
+import org.emini.world.World;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The contact solve shared among threads ({@link Simulation#setWorkerCount}) gives the results of one
+ * thread bit for bit: every colour is split among the threads (the smallest part lowered to one
+ * contact), in the scene that uses every element, with fixed and dynamic iterations, and in a pile
+ * with impacts that runs the hot relax passes.
+ */
+class WorkerCountTest {
+    private static long everything(boolean dynamicIterations, int workers, int ticks) {
+        EverythingScene scene = new EverythingScene(dynamicIterations);
+        scene.world.setWorkerCount(workers);
+        ((Simulation) scene.world).solver.setMinParallelPart(1);
+        try {
+            scene.run(ticks);
+            return scene.hash();
+        } finally {
+            scene.world.setWorkerCount(1);
+        }
+    }
+
+    @Test
+    void theEverythingSceneIsTheSameForAnyThreadCount() {
+        for (boolean dynamic : new boolean[] {false, true}) {
+            long one = everything(dynamic, 1, 400);
+            assertEquals(one, everything(dynamic, 2, 400), "2 threads, dynamic iterations " + dynamic);
+            assertEquals(one, everything(dynamic, 3, 400), "3 threads, dynamic iterations " + dynamic);
+        }
+    }
+
+    private static long pile(int workers) {
+        World world = new World();
+        world.setTicksPerSecond(60);
+        world.setWorkerCount(workers);
+        ((Simulation) world).solver.setMinParallelPart(1);
+        try {
+            Scenes.ground(world, 0f, 2000f);
+            Scenes.pyramid(world, 15, 20f);
+            Shape heavy = Shape.createRectangle(30f, 30f);
+            heavy.setMass(50f);
+            for (int t = 0; t < 240; t++) {
+                if (t % 40 == 0) {
+                    // Heavy boxes dropped on the pile: impacts that run the hot relax passes.
+                    world.addBody(new Body(-100f + t, -600f, heavy, true));
+                }
+                world.tick();
+            }
+            return EverythingScene.bodyHash(world);
+        } finally {
+            world.setWorkerCount(1);
+        }
+    }
+
+    @Test
+    void aPileTakingImpactsIsTheSameForAnyThreadCount() {
+        long one = pile(1);
+        assertEquals(one, pile(2));
+        assertEquals(one, pile(4));
+    }
+
+    @Test
+    void theCountIsCheckedAndReadBack() {
+        World world = new World();
+        assertEquals(1, world.getWorkerCount());
+        world.setWorkerCount(2);
+        assertEquals(2, world.getWorkerCount());
+        world.setWorkerCount(1);
+        assertEquals(1, world.getWorkerCount());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> world.setWorkerCount(0));
+        assertTrue(e.getMessage().contains("setWorkerCount"), e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> world.setWorkerCount(65));
+    }
+}
