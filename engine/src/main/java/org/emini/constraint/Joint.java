@@ -34,6 +34,8 @@ public final class Joint extends TwoBodyConstraint {
     private final float referenceAngle;
 
     private boolean active;
+    // A fixed joint's stiffness, when set (null: rigid, the manual's joint).
+    private WeldSoftness softness;
     private float axialMass;
     // Angle error at the start of the tick, as a rotation (exact for any turn of the bodies).
     private float errorCos;
@@ -128,8 +130,72 @@ public final class Joint extends TwoBodyConstraint {
         return torque;
     }
 
+    /**
+     * Makes a fixed joint soft: its point and its angle become spring-dampers of the given
+     * frequencies (a weld that bends and sways, as Box2D's weld joint with hertz set), stable at any
+     * frequency. A frequency of 0 keeps that part rigid; both 0 is the manual's rigid joint, solved
+     * exactly as before.
+     *
+     * @param linearHertz the point's natural frequency (Hz), &ge; 0
+     * @param angularHertz the angle's natural frequency (Hz), &ge; 0
+     * @param dampingRatio the damping ratio of both, &ge; 0 (1 is critical)
+     * @throws IllegalStateException for a loose joint (it has no angle to stiffen; use a
+     *     {@link RevoluteJoint} with a spring)
+     */
+    public void setStiffness(float linearHertz, float angularHertz, float dampingRatio) {
+        String where = "Joint.setStiffness";
+        Check.nonNegative(where, "linearHertz", linearHertz);
+        Check.nonNegative(where, "angularHertz", angularHertz);
+        Check.nonNegative(where, "dampingRatio", dampingRatio);
+        if (!fixed) {
+            throw new IllegalStateException(where + ": " + this + " is loose; only a fixed joint has a stiffness"
+                + " (a RevoluteJoint has a rotational spring)");
+        }
+        if (linearHertz == 0f && angularHertz == 0f) {
+            softness = null;
+            return;
+        }
+        if (softness == null) {
+            softness = new WeldSoftness();
+        }
+        softness.linearHertz = linearHertz;
+        softness.angularHertz = angularHertz;
+        softness.dampingRatio = dampingRatio;
+    }
+
+    /**
+     * The point's stiffness set with {@link #setStiffness}.
+     *
+     * @return the frequency (Hz), 0 when rigid
+     */
+    public float getLinearHertz() {
+        return softness == null ? 0f : softness.linearHertz;
+    }
+
+    /**
+     * The angle's stiffness set with {@link #setStiffness}.
+     *
+     * @return the frequency (Hz), 0 when rigid
+     */
+    public float getAngularHertz() {
+        return softness == null ? 0f : softness.angularHertz;
+    }
+
+    /**
+     * The damping ratio set with {@link #setStiffness}.
+     *
+     * @return ζ, 0 when rigid
+     */
+    public float getDampingRatio() {
+        return softness == null ? 0f : softness.dampingRatio;
+    }
+
     @Override
     public void prepare(SolverStep step) {
+        if (softness != null) {
+            step.soften(softness.linearHertz, softness.dampingRatio, softness.linear);
+            step.soften(softness.angularHertz, softness.dampingRatio, softness.angular);
+        }
         active = prepareAnchors(step);
         float k = iA + iB;
         axialMass = fixed && k > 0f ? 1f / k : 0f;
@@ -185,7 +251,7 @@ public final class Joint extends TwoBodyConstraint {
         float biasRate = useBias ? step.getJointBiasRate() : 0f;
         float massScale = useBias ? step.getJointMassScale() : 1f;
         float impulseScale = useBias ? step.getJointImpulseScale() : 0f;
-        if (axialMass != 0f) {
+        if (axialMass != 0f && softness == null) {
             arms(step);
             float weld = solveWeld(step, useBias, biasRate, massScale, impulseScale);
             if (weld >= 0f) {
@@ -194,11 +260,18 @@ public final class Joint extends TwoBodyConstraint {
         }
         if (axialMass != 0f) {
             float bias = 0f;
-            if (useBias) {
+            float rowMass = massScale;
+            float rowImpulse = impulseScale;
+            if (softness != null && softness.angularHertz > 0f) {
+                // A soft weld's angle is a spring: it acts in both passes, unclamped.
+                bias = softness.angular[0] * angleError(step);
+                rowMass = softness.angular[1];
+                rowImpulse = softness.angular[2];
+            } else if (useBias) {
                 bias = angularBias(step, biasRate);
             }
             float cdot = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
-            float impulse = -axialMass * massScale * (cdot + bias) - impulseScale * accAngle;
+            float impulse = -axialMass * rowMass * (cdot + bias) - rowImpulse * accAngle;
             accAngle += impulse;
             tickAngle += impulse;
             step.applyAngularImpulse(ia, -impulse);
@@ -209,7 +282,13 @@ public final class Joint extends TwoBodyConstraint {
         arms(step);
         float cx = relativeVelocityX(step);
         float cy = relativeVelocityY(step);
-        if (useBias) {
+        if (softness != null && softness.linearHertz > 0f) {
+            // A soft weld's point is a spring: it acts in both passes, unclamped.
+            cx += softness.linear[0] * sepX;
+            cy += softness.linear[0] * sepY;
+            massScale = softness.linear[1];
+            impulseScale = softness.linear[2];
+        } else if (useBias) {
             linearBias(step, biasRate);
             cx += biasX;
             cy += biasY;
@@ -405,6 +484,16 @@ public final class Joint extends TwoBodyConstraint {
         float inv = 1f / step.getTimestep();
         force = EMath.length(tickX, tickY) * inv;
         torque = Math.abs(tickAngle) * inv;
+    }
+
+    /** x of all linear impulses applied in the last tick (for a hinge that holds this pin). */
+    float getTickImpulseX() {
+        return tickX;
+    }
+
+    /** y of all linear impulses applied in the last tick. */
+    float getTickImpulseY() {
+        return tickY;
     }
 
     @Override

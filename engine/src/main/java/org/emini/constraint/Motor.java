@@ -55,6 +55,7 @@ public final class Motor implements Constraint {
     private float tickY;
     private float tickAngular;
     private float force;
+    private float breakForce = Float.POSITIVE_INFINITY;
     // The motor's frame in the current solve (the body's rotation in relative mode).
     private float frameC = 1f;
     private float frameS;
@@ -390,6 +391,23 @@ public final class Motor implements Constraint {
     @Override
     public float getForce() {
         return force;
+    }
+
+    /**
+     * Makes the motor breakable: once {@link #getForce()} exceeds this after a tick, the world
+     * removes it as the tick ends and lists it in the tick's
+     * {@link org.emini.dynamics.StepData#getBrokenConstraint(int)}.
+     *
+     * @param maxForce the force (or torque, for a rotational motor), &ge; 0; Float.POSITIVE_INFINITY
+     *     (the default) never breaks
+     */
+    public void setBreakForce(float maxForce) {
+        breakForce = Check.limit("Motor.setBreakForce", "maxForce", maxForce);
+    }
+
+    @Override
+    public float getBreakForce() {
+        return breakForce;
     }
 
     @Override

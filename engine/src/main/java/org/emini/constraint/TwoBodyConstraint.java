@@ -53,6 +53,7 @@ public abstract class TwoBodyConstraint implements Constraint {
     private float impulseSubstep;
     /** What {@link #getForce()} reports. */
     float force;
+    private float breakForce = Float.POSITIVE_INFINITY;
 
     TwoBodyConstraint(String where, Body a, Body b, float ax, float ay, float bx, float by) {
         Require.inWorld(where, "body a", a);
@@ -135,6 +136,31 @@ public abstract class TwoBodyConstraint implements Constraint {
     void applyLinear(SolverStep step, float px, float py) {
         step.applyImpulse(ia, -px, -py, rAx, rAy);
         step.applyImpulse(ib, px, py, rBx, rBy);
+    }
+
+    /**
+     * Applies a linear impulse with given angular parts: +p and +lb to B, −p and −la to A (for rows
+     * whose lever arms are not the anchors', such as a slide axis fixed in A).
+     */
+    void applyLever(SolverStep step, float px, float py, float la, float lb) {
+        step.applyImpulse(ia, -px, -py, 0f, 0f);
+        step.applyAngularImpulse(ia, -la);
+        step.applyImpulse(ib, px, py, 0f, 0f);
+        step.applyAngularImpulse(ib, lb);
+    }
+
+    /** A linear position correction, rate times error, capped at the joint push speed (px/s). */
+    static float pushBias(SolverStep step, float rate, float error) {
+        float max = step.getJointPushMaxVelocity();
+        float bias = rate * error;
+        return bias < -max ? -max : (bias > max ? max : bias);
+    }
+
+    /** An angular position correction (rad/s), capped so that the bodies' rims move at most the joint push speed. */
+    float turnBias(SolverStep step, float rate, float error) {
+        float max = radius > 0f ? step.getJointPushMaxVelocity() / radius : Float.POSITIVE_INFINITY;
+        float bias = rate * error;
+        return bias < -max ? -max : (bias > max ? max : bias);
     }
 
     /**
@@ -271,5 +297,22 @@ public abstract class TwoBodyConstraint implements Constraint {
     @Override
     public float getForce() {
         return force;
+    }
+
+    /**
+     * Makes the constraint breakable: once {@link #getForce()} exceeds this after a tick, the
+     * world removes it as the tick ends and lists it in the tick's
+     * {@link org.emini.dynamics.StepData#getBrokenConstraint(int)}.
+     *
+     * @param maxForce the force (mass·px/s², as {@link #getForce()} reports it), &ge; 0;
+     *     Float.POSITIVE_INFINITY (the default) never breaks
+     */
+    public void setBreakForce(float maxForce) {
+        breakForce = Check.limit(getClass().getSimpleName() + ".setBreakForce", "maxForce", maxForce);
+    }
+
+    @Override
+    public float getBreakForce() {
+        return breakForce;
     }
 }

@@ -1,6 +1,11 @@
 /**
- * The built-in constraints: {@link org.emini.constraint.Joint} (pin joints, loose or fixed),
- * {@link org.emini.constraint.Spring} (springs and rigid rods) and {@link org.emini.constraint.Motor}.
+ * The built-in constraints: the manual's {@link org.emini.constraint.Joint} (pin joints, loose or
+ * fixed, the fixed one optionally soft), {@link org.emini.constraint.Spring} (springs and rigid rods)
+ * and {@link org.emini.constraint.Motor}; and the joints of Box2D-style games:
+ * {@link org.emini.constraint.RevoluteJoint}, {@link org.emini.constraint.PrismaticJoint},
+ * {@link org.emini.constraint.WheelJoint}, {@link org.emini.constraint.MouseJoint},
+ * {@link org.emini.constraint.DistanceJoint} and {@link org.emini.constraint.MotorJoint}. Every one
+ * may be made breakable ({@code setBreakForce}).
  *
  * <p>All are solved by the world's soft-step solver together with the contacts (see
  * {@link org.emini.dynamics.Constraint}): rigid constraints correct their position error with the

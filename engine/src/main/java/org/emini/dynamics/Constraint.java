@@ -80,6 +80,17 @@ public interface Constraint {
     void finish(SolverStep step);
 
     /**
+     * The force past which the constraint breaks: when {@link #getForce()} exceeds it after a tick,
+     * the world removes the constraint as the tick ends and lists it in
+     * {@link StepData#getBrokenConstraint(int)}. The default never breaks.
+     *
+     * @return the force (the unit of {@link #getForce()}), Float.POSITIVE_INFINITY for unbreakable
+     */
+    default float getBreakForce() {
+        return Float.POSITIVE_INFINITY;
+    }
+
+    /**
      * The magnitude of the force (or torque, for angular constraints) this constraint exerted in
      * the last tick, for events and for the application.
      *

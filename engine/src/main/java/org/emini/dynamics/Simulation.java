@@ -1272,6 +1272,7 @@ public abstract class Simulation {
         if (bad != null) {
             throw leftFiniteRange(bad, solver.bodies.describe(bad));
         }
+        breakOverloaded();
         if (sleep.isEnabled()) {
             sleep.afterSolve(area.bodies, area.count, contacts.active, contacts.activeCount, constraints.array(),
                 constraints.count(), settings, dt);
@@ -1280,6 +1281,20 @@ public abstract class Simulation {
             sensors.update(this, stepData);
         }
         tickCount++;
+    }
+
+    /**
+     * Removes, as the tick ends, every constraint whose force this tick exceeded its break force,
+     * and lists it in the step data.
+     */
+    private void breakOverloaded() {
+        Constraint[] list = constraints.array();
+        for (int i = 0, n = constraints.count(); i < n; i++) {
+            Constraint c = list[i];
+            if (c.getForce() > c.getBreakForce() && removeConstraint(c)) {
+                stepData.constraintBroke(c);
+            }
+        }
     }
 
     /**

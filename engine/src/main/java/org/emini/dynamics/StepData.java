@@ -30,6 +30,8 @@ public final class StepData {
     private int hitCount;
     private final BodyPairs sensorBegins = new BodyPairs();
     private final BodyPairs sensorEnds = new BodyPairs();
+    private Constraint[] broken = new Constraint[4];
+    private int brokenCount;
     private long tick;
 
     StepData() {
@@ -39,8 +41,10 @@ public final class StepData {
     void begin(long tickNumber) {
         Arrays.fill(begun, 0, beginCount, null);
         Arrays.fill(hit, 0, hitCount, null);
+        Arrays.fill(broken, 0, brokenCount, null);
         beginCount = 0;
         hitCount = 0;
+        brokenCount = 0;
         ends.beginTick(true);
         sensorBegins.beginTick(false);
         sensorEnds.beginTick(true);
@@ -100,6 +104,13 @@ public final class StepData {
 
     void sensorEnded(Body sensor, Body visitor) {
         sensorEnds.add(sensor, visitor);
+    }
+
+    void constraintBroke(Constraint c) {
+        if (brokenCount == broken.length) {
+            broken = Arrays.copyOf(broken, 2 * brokenCount);
+        }
+        broken[brokenCount++] = c;
     }
 
     void contactEnded(Contact c) {
@@ -334,5 +345,28 @@ public final class StepData {
         if (index < 0 || index >= bodyCount) {
             throw new IndexOutOfBoundsException("StepData.getBody: index " + index + " of " + bodyCount);
         }
+    }
+
+    /**
+     * The number of constraints that broke in the tick: their force exceeded their
+     * {@link Constraint#getBreakForce()}, and the world removed them as the tick ended.
+     *
+     * @return the count
+     */
+    public int getBrokenCount() {
+        return brokenCount;
+    }
+
+    /**
+     * A constraint that broke in the tick (no longer in the world).
+     *
+     * @param index 0 to {@link #getBrokenCount()} − 1
+     * @return the constraint; its {@link Constraint#getForce()} is the force that broke it
+     */
+    public Constraint getBrokenConstraint(int index) {
+        if (index < 0 || index >= brokenCount) {
+            throw new IndexOutOfBoundsException("StepData.getBrokenConstraint: index " + index + " of " + brokenCount);
+        }
+        return broken[index];
     }
 }
