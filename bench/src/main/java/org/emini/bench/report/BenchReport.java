@@ -17,13 +17,14 @@ import org.emini.bench.run.Measurement;
  * @param seconds how long the run took
  * @param scenes the comparison table, one entry per scene
  * @param scaling the rain series, every engine at every count
- * @param pymunk the Python engine's status and figures
+ * @param external the out-of-process engines' status and message by engine id (pymunk, box2d-v3, rapier)
  * @param resumed true when the run ({@code --resume}) kept figures an earlier run measured, whose time
  *     {@code seconds} does not count
  */
 public record BenchReport(String format, int version, String generated, String mode, Map<String, Object> jmh,
                           Map<String, Object> machine, double loadAverageEnd, double seconds, List<SceneEntry> scenes,
-                          List<Measurement> scaling, Map<String, Object> pymunk, boolean resumed) {
+                          List<Measurement> scaling, Map<String, Map<String, Object>> external,
+                          boolean resumed) {
 
     /** The run's time as the page and the tables print it, saying when it kept earlier figures. */
     public String runTime() {

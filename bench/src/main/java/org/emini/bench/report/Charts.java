@@ -21,7 +21,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 /** The report's plots, written with XChart as SVG (for the page) and PNG. */
 public final class Charts {
     private static final Color[] COLORS = {
-        new Color(0xD62728), new Color(0x1F77B4), new Color(0x2CA02C), new Color(0xFF7F0E), new Color(0x9467BD)};
+        new Color(0xD62728), new Color(0x1F77B4), new Color(0x2CA02C), new Color(0xFF7F0E), new Color(0x9467BD),
+        new Color(0x8C564B), new Color(0x17BECF)};
 
     private Charts() {
     }

@@ -78,8 +78,9 @@ public final class HtmlPage {
             h.append("<p><img src=\"").append(scalingChart).append(".svg\" alt=\"scaling, log-log\" width=900></p>\n");
         }
         h.append(scalingTable(r.scaling(), engines));
-        h.append("<h2>pymunk</h2>\n<p>").append(esc(String.valueOf(r.pymunk().get("status")))).append(": ")
-            .append(esc(String.valueOf(r.pymunk().get("message")))).append("</p>\n");
+        h.append("<h2>Engines in a process of their own</h2>\n");
+        r.external().forEach((e, o) -> h.append("<p><b>").append(esc(e)).append("</b>: ").append(esc(String.valueOf(o.get("status"))))
+            .append(": ").append(esc(String.valueOf(o.get("message")))).append("</p>\n"));
         h.append("<h2>Engine settings</h2>\n<table><tr><th class=l>engine</th><th class=l>settings</th></tr>");
         Map<String, String> settings = new LinkedHashMap<>();
         for (BenchReport.SceneEntry s : r.scenes()) {

@@ -101,7 +101,8 @@ public final class MarkdownTables {
                 md.append(' ').append(HtmlPage.fmt(HtmlPage.slope(r.scaling(), e))).append(" |\n");
             }
         }
-        md.append("\npymunk: ").append(r.pymunk().get("status")).append(": ").append(r.pymunk().get("message")).append('\n');
+        md.append('\n');
+        r.external().forEach((e, o) -> md.append(e).append(": ").append(o.get("status")).append(": ").append(o.get("message")).append("\n\n"));
         return md.toString();
     }
 

@@ -18,7 +18,9 @@ import java.util.List;
  * The oracle's Python virtual environment, {@code oracle-py/.venv}: created on first use from the pinned
  * {@code oracle-py/requirements.txt} (then the package itself, editable, without dependencies) and
  * reused while the requirements and {@code pyproject.toml} are unchanged (a stamp file holds their
- * hash). A lock file keeps two harness processes from building it at once.
+ * hash). A lock file keeps two harness processes from building it at once. The benchmark makes its
+ * Python peers' environments the same way ({@code bench/box2d/.venv}: a folder with a
+ * {@code requirements.txt} and no package of its own).
  */
 public final class OracleEnvironment {
     private static final String STAMP = "emini-oracle.stamp";
@@ -65,7 +67,7 @@ public final class OracleEnvironment {
      */
     public Path ensure(PrintStream log) throws IOException {
         if (!Files.isRegularFile(project.resolve("requirements.txt"))) {
-            throw new IOException("no oracle project at " + project + " (requirements.txt missing)");
+            throw new IOException("no Python project at " + project + " (requirements.txt missing)");
         }
         String want = fingerprint();
         try (FileChannel channel = new RandomAccessFile(project.resolve(".venv.lock").toFile(), "rw").getChannel();
@@ -75,16 +77,19 @@ public final class OracleEnvironment {
                     && Files.readString(stamp, StandardCharsets.UTF_8).trim().equals(want)) {
                 return interpreter();
             }
-            log.println("oracle: creating " + project.getFileName() + "/.venv from the pinned requirements"
+            String name = project.getFileName().toString();
+            log.println(name + ": creating " + name + "/.venv from the pinned requirements"
                     + " (first use; later runs reuse it)");
             exec(List.of(python, "-m", "venv", "--clear", venv().toString()), "creating the virtual environment");
             String py = interpreter().toString();
             exec(List.of(py, "-m", "pip", "install", "--disable-pip-version-check", "--no-input", "-q",
-                    "-r", project.resolve("requirements.txt").toString()), "installing oracle-py/requirements.txt");
-            exec(List.of(py, "-m", "pip", "install", "--disable-pip-version-check", "--no-input", "-q",
-                    "--no-deps", "-e", project.toString()), "installing the oracle package");
+                    "-r", project.resolve("requirements.txt").toString()), "installing " + name + "/requirements.txt");
+            if (Files.isRegularFile(project.resolve("pyproject.toml"))) {
+                exec(List.of(py, "-m", "pip", "install", "--disable-pip-version-check", "--no-input", "-q",
+                        "--no-deps", "-e", project.toString()), "installing the " + name + " package");
+            }
             Files.writeString(stamp, want + "\n", StandardCharsets.UTF_8);
-            log.println("oracle: environment ready");
+            log.println(name + ": environment ready");
             return interpreter();
         }
     }

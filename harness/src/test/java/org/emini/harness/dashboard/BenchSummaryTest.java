@@ -24,7 +24,10 @@ class BenchSummaryTest {
         + "     \"check\": {\"verdict\": \"stable\"}, \"afterRun\": {\"verdict\": \"stable\"}},"
         + "    {\"engine\": \"dyn4j\", \"status\": \"ok\", \"cpuMsPerTick\": null, \"msPerTick\": 0.9,"
         + "     \"check\": {\"verdict\": \"drifted\"}},"
-        + "    {\"engine\": \"jbox2d\", \"status\": \"failed\", \"message\": \"JMH exited with 1\"}]},"
+        + "    {\"engine\": \"jbox2d\", \"status\": \"failed\", \"message\": \"JMH exited with 1\"},"
+        + "    {\"engine\": \"box2d-v3\", \"status\": \"ok\", \"cpuMsPerTick\": 0.15, \"msPerTick\": 0.2, \"threadBytesPerTick\": null,"
+        + "     \"check\": {\"verdict\": \"stable\"}},"
+        + "    {\"engine\": \"rapier\", \"status\": \"missing\", \"message\": \"cargo build failed\"}]},"
         + "  {\"id\": \"bench/tumbler\", \"title\": \"tumbler\", \"status\": \"pending\", \"message\": \"no scene file\", \"results\": []}],"
         + " \"scaling\": ["
         + "  {\"engine\": \"emini\", \"dynamicBodies\": 100, \"cpuMsPerTick\": 0.5},"
@@ -50,7 +53,7 @@ class BenchSummaryTest {
         assertEquals("2026-11-24T13:30:00Z", s.get("generated").getAsString());
         assertEquals("AMD EPYC", s.getAsJsonObject("machine").get("cpu").getAsString());
         assertTrue(s.get("resumed").getAsBoolean(), "the page says when figures were kept from an earlier run");
-        assertEquals("[\"emini\",\"dyn4j\",\"jbox2d\",\"pymunk\"]", s.get("engines").toString());
+        assertEquals("[\"emini\",\"dyn4j\",\"jbox2d\",\"box2d-v3\",\"rapier\",\"pymunk\"]", s.get("engines").toString());
 
         JsonObject pyramid = s.getAsJsonArray("scenes").get(0).getAsJsonObject().getAsJsonObject("results");
         JsonObject emini = pyramid.getAsJsonObject("emini");
@@ -61,6 +64,11 @@ class BenchSummaryTest {
         JsonObject failed = pyramid.getAsJsonObject("jbox2d");
         assertFalse(failed.has("cpuMsPerTick"));
         assertEquals("JMH exited with 1", failed.get("message").getAsString());
+        // The out-of-process engines (issue 16): a time without an allocation figure, and an engine that could not be made.
+        assertEquals(0.15, pyramid.getAsJsonObject("box2d-v3").get("cpuMsPerTick").getAsDouble());
+        assertEquals("stable", pyramid.getAsJsonObject("box2d-v3").get("verdict").getAsString());
+        assertEquals("missing", pyramid.getAsJsonObject("rapier").get("status").getAsString());
+        assertEquals("cargo build failed", pyramid.getAsJsonObject("rapier").get("message").getAsString());
         assertEquals("pending", s.getAsJsonArray("scenes").get(1).getAsJsonObject().get("status").getAsString());
 
         JsonObject scaling = s.getAsJsonObject("scaling");
