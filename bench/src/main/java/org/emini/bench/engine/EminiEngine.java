@@ -13,12 +13,18 @@ import org.emini.particle.ParticleEmitter;
  * Scene units are Emini's units (px), so nothing is scaled.
  */
 final class EminiEngine implements BenchEngine {
+    private final int workers;
     private World world;
     private Body[] bodies;
 
+    /** Emini solving on the benchmark's thread alone ({@code emini}), or sharing its contact passes ({@code emini-2t}). */
+    EminiEngine(int workers) {
+        this.workers = workers;
+    }
+
     @Override
     public String id() {
-        return "emini";
+        return workers == 1 ? "emini" : "emini-" + workers + "t";
     }
 
     @Override
@@ -30,6 +36,7 @@ final class EminiEngine implements BenchEngine {
             throw new UnsupportedSceneException(e.getMessage());
         }
         world = built.world();
+        world.setWorkerCount(workers);
         bodies = built.bodies().values().toArray(new Body[0]);
     }
 
@@ -101,7 +108,7 @@ final class EminiEngine implements BenchEngine {
 
     @Override
     public String settings() {
-        return "px units; timestep " + world.getTimestep() + " s; " + world.getConstraintIterations()
+        return (workers == 1 ? "" : workers + " threads share the contact passes (World.setWorkerCount); ") + "px units; timestep " + world.getTimestep() + " s; " + world.getConstraintIterations()
             + " substeps (each one soft solve + one relax pass); default SolverSettings; "
             + (world.isSleepingEnabled() ? String.format(java.util.Locale.ROOT, "sleeping on (%.1f px/s = %.2f m/s, "
                 + "%.1f deg/s, %.1f s)", world.getSolverSettings().getSleepLinearTolerance(),
@@ -114,6 +121,9 @@ final class EminiEngine implements BenchEngine {
 
     @Override
     public void close() {
+        if (world != null) {
+            world.setWorkerCount(1);
+        }
         world = null;
         bodies = null;
     }

@@ -5,7 +5,7 @@ import java.util.List;
 /** The engines the benchmark knows, by id. */
 public final class Engines {
     /** Every engine id, Emini first. */
-    public static final List<String> ALL = List.of("emini", "dyn4j", "jbox2d", "gdx-box2d");
+    public static final List<String> ALL = List.of("emini", "emini-2t", "dyn4j", "jbox2d", "gdx-box2d");
 
     private Engines() {
     }
@@ -14,7 +14,9 @@ public final class Engines {
     public static BenchEngine create(String id) {
         switch (id) {
             case "emini":
-                return new EminiEngine();
+                return new EminiEngine(1);
+            case "emini-2t":
+                return new EminiEngine(2);
             case "dyn4j":
                 return new Dyn4jEngine();
             case "jbox2d":
