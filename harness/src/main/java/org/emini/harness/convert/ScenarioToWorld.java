@@ -347,6 +347,13 @@ public final class ScenarioToWorld {
     }
 
     private void joint(JsonNode n) {
+        String type = n.path("type").asText("pin");
+        if (!type.equals("pin")) {
+            throw new Skip("type " + type + " (a world file holds only the manual's pin and fixed joints)");
+        }
+        if (n.has("stiffness") || n.has("breakForce")) {
+            throw new Skip("stiffness and breakForce are not stored (the original's joints are rigid and unbreakable)");
+        }
         PhyJoint j = new PhyJoint();
         pair(n, j);
         j.setFixedByte(n.path("fixed").asBoolean(false) ? 1 : 0);
