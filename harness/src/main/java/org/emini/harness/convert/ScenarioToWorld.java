@@ -351,10 +351,13 @@ public final class ScenarioToWorld {
         if (!type.equals("pin")) {
             throw new Skip("type " + type + " (a world file holds only the manual's pin and fixed joints)");
         }
-        if (n.has("stiffness") || n.has("breakForce")) {
-            throw new Skip("stiffness and breakForce are not stored (the original's joints are rigid and unbreakable)");
-        }
         PhyJoint j = new PhyJoint();
+        for (String key : new String[] {"stiffness", "breakForce"}) {
+            if (n.has(key)) {
+                approximated.add("joint " + doc.getConstraints().size() + ": " + key
+                        + " is not stored (the original's joints are rigid and unbreakable)");
+            }
+        }
         pair(n, j);
         j.setFixedByte(n.path("fixed").asBoolean(false) ? 1 : 0);
         if (!n.path("collide").asBoolean(false)) {

@@ -159,8 +159,10 @@ class JointBuilderTest {
     void worldFilesSkipTheGameJointsSayingWhy() {
         ScenarioToWorld.Result r = ScenarioToWorld.convert(Scenes.valid("j.yaml", BODIES, "joints:",
             "  - {bodyA: a, bodyB: b, at: [0, 0]}",
-            "  - {type: revolute, bodyA: a, bodyB: b, at: [0, 0]}", "run: {duration: 1}"));
-        assertEquals(1, r.world().getConstraints().size());
+            "  - {type: revolute, bodyA: a, bodyB: b, at: [0, 0]}",
+            "  - {bodyA: a, bodyB: b, at: [0, 0], fixed: true, stiffness: {angularHertz: 2}}", "run: {duration: 1}"));
+        assertEquals(2, r.world().getConstraints().size());
+        assertTrue(r.approximated().stream().anyMatch(s -> s.startsWith("joint 1: stiffness")), r.approximated()::toString);
         List<String> skipped = new ArrayList<>(r.notConverted());
         assertTrue(skipped.stream().anyMatch(s -> s.startsWith("joint 1: type revolute")), skipped::toString);
     }
