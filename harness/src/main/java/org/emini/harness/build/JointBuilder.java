@@ -94,22 +94,19 @@ final class JointBuilder implements ElementBuilder {
         return m;
     }
 
-    private interface SpringSetter {
-        void set(float hertz, float dampingRatio);
-    }
-
-    private static void spring(JsonNode j, JsonPath p, SpringSetter setter) {
+    private static void spring(JsonNode j, JsonPath p, FloatPair setter) {
         JsonNode s = j.get("spring");
         if (s != null) {
             Located.at(p.key("spring"), () -> setter.set(f(s.get("hertz")), f(s.path("dampingRatio"))));
         }
     }
 
-    private interface RangeSetter {
-        void set(float lower, float upper);
+    /** An engine setter of two floats: (hertz, dampingRatio), (lower, upper), (speed, cap). */
+    private interface FloatPair {
+        void set(float first, float second);
     }
 
-    private static void range(JsonNode j, JsonPath p, String key, RangeSetter setter) {
+    private static void range(JsonNode j, JsonPath p, String key, FloatPair setter) {
         JsonNode r = j.get(key);
         if (r != null) {
             Located.at(p.key(key), () -> setter.set(x(r), y(r)));
@@ -117,7 +114,7 @@ final class JointBuilder implements ElementBuilder {
     }
 
     /** The motor's cap is a torque for a hinge or a wheel, a force for a slide. */
-    private static void motor(JsonNode j, JsonPath p, String cap, RangeSetter setter) {
+    private static void motor(JsonNode j, JsonPath p, String cap, FloatPair setter) {
         JsonNode m = j.get("motor");
         if (m != null) {
             Located.at(p.key("motor"), () -> setter.set(f(m.get("speed")), f(m.get(cap))));
