@@ -31,6 +31,9 @@ def test_library_scene_runs_or_states_why_not(loader, file):
         assert "particles" in named
     if any("velocity" in m for m in s.elements.get("motors", [])):
         assert "linear motor" in named
+    for j in s.elements.get("joints", []):
+        if j.get("type", "pin") not in ("pin", "revolute", "distance", "rope"):  # the mapped types
+            assert "joint type " + j["type"] in named
 
 
 def test_skipped_and_invalid_scenes_are_reported_not_run(tmp_path):

@@ -378,6 +378,47 @@ def test_rigid_link_keeps_its_length(loader):
     assert doc["metrics"]["angularMomentum"][-1] == pytest.approx(doc["metrics"]["angularMomentum"][0], rel=1e-3)
 
 
+def test_revolute_limits_stop_a_pendulum_and_its_motor_turns_it(loader):
+    # A bob on a hinge released horizontally, limited to [-0.5, 0.5] rad about its start: gravity swings it
+    # down (growing angle on the y-down screen) until the upper limit holds it. A free wheel on a second
+    # hinge turns at its motor's 3 rad/s.
+    doc = run(loader, """
+world: {ticksPerSecond: 60}
+bodies:
+  - {name: post, shape: {type: circle, radius: 2}, static: true}
+  - {name: bob, shape: {type: circle, radius: 5}, position: [50, 0]}
+  - {name: wheel, shape: {type: circle, radius: 10}, position: [0, 200]}
+joints:
+  - {type: revolute, bodyA: post, bodyB: bob, at: [0, 0], limits: [-0.5, 0.5]}
+  - {type: revolute, bodyA: post, bodyB: wheel, at: [0, 200], motor: {speed: 3, maxTorque: 1.0e6}}
+run: {duration: 2, record: {metrics: [constraintError, jointLimits]}}
+""")
+    assert max(column(doc, "bob", "angle")) == pytest.approx(0.5, abs=0.05)
+    assert max(doc["metrics"]["jointLimits.angle"]) < 0.05
+    # Chipmunk's RotaryLimitJoint is a pure torque: the small bob (I = 12.5) stopped at its limit turns
+    # about its own centre against the pivot, which gives by some px. Emini's limit rows act about the pin
+    # (RevoluteJoint's Javadoc); MAPPING.md, Joints.
+    assert 1 < max(doc["metrics"]["constraintError.max"]) < 6
+    assert column(doc, "wheel", "omega")[-1] == pytest.approx(3, rel=1e-3)
+
+
+def test_a_rope_is_slack_below_its_length_and_taut_at_it(loader):
+    # 60 px apart on a 100 px rope: the ball falls freely 40 px, then hangs at the rope's length.
+    doc = run(loader, """
+bodies:
+  - {name: hook, shape: {type: circle, radius: 2}, static: true}
+  - {name: ball, shape: {type: circle, radius: 5}, position: [0, -40]}
+joints: [{type: rope, bodyA: hook, bodyB: ball, length: 100, anchorA: [0, -100]}]
+run: {duration: 3, record: {metrics: [constraintError]}}
+""")
+    ys = column(doc, "ball", "y")
+    assert ys[2] == pytest.approx(-40 + 0.5 * 100 * 0.1 ** 2, abs=0.6)  # free fall over the first 0.1 s
+    assert ys[-1] == pytest.approx(0, abs=1)  # hanging 100 px below the anchor at y -100
+    # Arriving at sqrt(2 g 40) = 89 px/s, the SlideJoint's bias lets the rope stretch by about half a
+    # tick's travel (4.5 px) before it pulls the ball back.
+    assert max(doc["metrics"]["constraintError.max"]) < 4
+
+
 # ---------------------------------------------------------------------------------------------------
 # Penetration and tunnelling monitors
 

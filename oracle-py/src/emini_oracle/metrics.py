@@ -70,7 +70,8 @@ def _distance(a, b):
 def create(spec, built: Built, snapshot: Snapshot):
     return {"energy": Energy, "linearMomentum": LinearMomentum, "angularMomentum": AngularMomentum,
             "penetration": Penetration, "constraintError": ConstraintError, "tunnelling": Tunnelling,
-            "stability": Stability, "particles": Particles, "sleeping": Sleeping}[spec.kind](built, spec, snapshot)
+            "stability": Stability, "particles": Particles, "sleeping": Sleeping,
+            "jointLimits": JointLimits}[spec.kind](built, spec, snapshot)
 
 
 class Metric:
@@ -174,7 +175,8 @@ class Penetration(Metric):
 
 
 class ConstraintError(Metric):
-    """Distance between the two anchors of each pin joint and |d − d₀| of each rigid link (px)."""
+    """Distance between the two anchors of each pin and revolute joint, |d − d₀| of each rigid link or rigid
+    distance joint, and how far a rope or ranged distance joint lies outside its range (px)."""
 
     def __init__(self, built: Built, spec, snapshot: Snapshot):
         self.links = built.links
@@ -183,10 +185,28 @@ class ConstraintError(Metric):
         errors = []
         for link in self.links:
             d = _distance(link.a.local_to_world(link.anchor_a), link.b.local_to_world(link.anchor_b))
-            errors.append(d if link.kind == "pin" else abs(d - link.rest))
+            if link.kind == "range":
+                errors.append(max(0.0, link.rest - d, d - link.upper))
+            else:
+                errors.append(d if link.kind == "pin" else abs(d - link.rest))
         if not errors:
             return [0.0, 0.0]
         return [max(errors), sum(errors) / len(errors)]
+
+
+class JointLimits(Metric):
+    """jointLimits.angle: how far the worst limited revolute joint lies outside its limits (rad).
+    .translation is 0: prismatic joints are not mapped (unsupported, so such a scene is not judged)."""
+
+    def __init__(self, built: Built, spec, snapshot: Snapshot):
+        self.hinges = built.hinges
+
+    def sample(self, tick):
+        worst = 0.0
+        for h in self.hinges:
+            angle = h.b.angle - h.a.angle - h.ref
+            worst = max(worst, h.lower - angle, angle - h.upper)
+        return [worst, 0.0]
 
 
 def _orient(ax, ay, bx, by, cx, cy):

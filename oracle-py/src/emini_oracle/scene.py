@@ -33,6 +33,7 @@ METRIC_CHANNELS = {
     "stability": ["stability.maxSpeed", "stability.maxAngularSpeed", "stability.nonFinite"],
     "particles": ["particles.count", "particles.outside"],
     "sleeping": ["sleeping.count", "sleeping.fraction"],
+    "jointLimits": ["jointLimits.angle", "jointLimits.translation"],
 }
 BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed")
 

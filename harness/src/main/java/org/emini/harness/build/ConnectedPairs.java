@@ -43,6 +43,9 @@ public final class ConnectedPairs {
         }
         for (int i = 0; i < s.node().size(); i++) {
             JsonNode n = s.node().get(i);
+            if (!n.has("bodyA")) {
+                continue; // a mouse joint holds one body
+            }
             Body a = world.bodies().get(n.get("bodyA").asText());
             Body b = world.bodies().get(n.get("bodyB").asText());
             // A body joined to itself is the constraint builder's to refuse.

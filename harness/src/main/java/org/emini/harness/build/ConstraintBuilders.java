@@ -1,7 +1,6 @@
 package org.emini.harness.build;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import org.emini.constraint.Joint;
 import org.emini.constraint.Motor;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
@@ -9,7 +8,7 @@ import org.emini.harness.load.JsonPath;
 import org.emini.harness.scenario.Section;
 
 /**
- * Builders of the constraint sections: joints, springs and motors, through the engine's public API.
+ * Builders of the springs and motors sections ({@link JointBuilder} builds the joints), through the engine's public API.
  * Which joined bodies may not collide is {@link ConnectedPairs}'s work, done before these run.
  */
 final class ConstraintBuilders {
@@ -22,30 +21,6 @@ final class ConstraintBuilders {
 
     private static float y(JsonNode v) {
         return (float) v.get(1).asDouble();
-    }
-
-    /** Pin joints, or fixed joints that also lock the relative angle. */
-    static final class Joints implements ElementBuilder {
-        @Override
-        public void build(Section section, BuiltWorld world) {
-            for (int i = 0; i < section.node().size(); i++) {
-                JsonNode j = section.node().get(i);
-                JsonPath p = section.path().index(i);
-                Body a = world.body(j.get("bodyA").asText());
-                Body b = world.body(j.get("bodyB").asText());
-                boolean fixed = j.path("fixed").asBoolean(false);
-                Joint joint = Located.at(p, () -> {
-                    if (j.has("at")) {
-                        return Joint.atWorldPoint(a, b, x(j.get("at")), y(j.get("at")), fixed);
-                    }
-                    JsonNode pa = j.path("anchorA");
-                    JsonNode pb = j.path("anchorB");
-                    return new Joint(a, b, pa.isArray() ? x(pa) : 0f, pa.isArray() ? y(pa) : 0f,
-                        pb.isArray() ? x(pb) : 0f, pb.isArray() ? y(pb) : 0f, fixed);
-                });
-                world.world().addConstraint(joint);
-            }
-        }
     }
 
     /** Springs: rigid links without a stiffness, Hooke springs with one. */

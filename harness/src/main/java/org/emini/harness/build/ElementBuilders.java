@@ -16,7 +16,7 @@ final class ElementBuilders {
         Map<String, ElementBuilder> builders = new LinkedHashMap<>();
         builders.put("world.simulationArea", new SimulationAreaBuilder());
         builders.put("landscape", new LandscapeBuilder());
-        builders.put("joints", new ConstraintBuilders.Joints());
+        builders.put("joints", new JointBuilder());
         builders.put("springs", new ConstraintBuilders.Springs());
         builders.put("motors", new ConstraintBuilders.Motors());
         builders.put("particles", new ParticleBuilder());

@@ -347,7 +347,17 @@ public final class ScenarioToWorld {
     }
 
     private void joint(JsonNode n) {
+        String type = n.path("type").asText("pin");
+        if (!type.equals("pin")) {
+            throw new Skip("type " + type + " (a world file holds only the manual's pin and fixed joints)");
+        }
         PhyJoint j = new PhyJoint();
+        for (String key : new String[] {"stiffness", "breakForce"}) {
+            if (n.has(key)) {
+                approximated.add("joint " + doc.getConstraints().size() + ": " + key
+                        + " is not stored (the original's joints are rigid and unbreakable)");
+            }
+        }
         pair(n, j);
         j.setFixedByte(n.path("fixed").asBoolean(false) ? 1 : 0);
         if (!n.path("collide").asBoolean(false)) {

@@ -46,6 +46,8 @@ public final class Metrics {
                 return new StabilityMetric(world);
             case constraintError:
                 return new ConstraintErrorMetric(world.world());
+            case jointLimits:
+                return new JointLimitsMetric(world.world());
             case particles:
                 return new ParticlesMetric(world, spec);
             case sleeping:

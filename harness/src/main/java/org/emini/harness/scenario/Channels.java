@@ -24,7 +24,8 @@ public final class Channels {
             MetricSpec.Kind.tunnelling, List.of("tunnelling.count"),
             MetricSpec.Kind.stability, List.of("stability.maxSpeed", "stability.maxAngularSpeed", "stability.nonFinite"),
             MetricSpec.Kind.particles, List.of("particles.count", "particles.outside"),
-            MetricSpec.Kind.sleeping, List.of("sleeping.count", "sleeping.fraction"));
+            MetricSpec.Kind.sleeping, List.of("sleeping.count", "sleeping.fraction"),
+            MetricSpec.Kind.jointLimits, List.of("jointLimits.angle", "jointLimits.translation"));
 
     /** The metric producing a channel, or null for a body channel or an unknown name. */
     public static MetricSpec.Kind metricOf(String channel) {

@@ -21,7 +21,7 @@ public record MetricSpec(Kind kind, double aboutX, double aboutY, List<WallSpec>
 
     /** Metric kinds, named as in the scene files; each documented in scenarios/README.md. */
     public enum Kind { energy, linearMomentum, angularMomentum, penetration, constraintError, tunnelling, stability,
-        particles, sleeping }
+        particles, sleeping, jointLimits }
 
     /** A metric with no options. */
     public static MetricSpec plain(Kind kind, JsonPath path) {

@@ -95,10 +95,12 @@ public final class SceneScaling {
             case "penetration.mean":
             case "constraintError.max":
             case "constraintError.mean":
+            case "jointLimits.translation":
             case "stability.maxSpeed":
                 return 1;
             case "penetration.points":
             case "tunnelling.count":
+            case "jointLimits.angle":
             case "stability.maxAngularSpeed":
             case "stability.nonFinite":
             case "particles.count":
