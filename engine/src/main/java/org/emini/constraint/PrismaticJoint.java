@@ -174,6 +174,24 @@ public final class PrismaticJoint extends TwoBodyConstraint {
     }
 
     /**
+     * The motor's target speed.
+     *
+     * @return the speed (px/s)
+     */
+    public float getMotorSpeed() {
+        return axis.getMotorSpeed();
+    }
+
+    /**
+     * The motor's force cap.
+     *
+     * @return the largest force (mass·px/s²)
+     */
+    public float getMaxMotorForce() {
+        return axis.getMaxMotorForce();
+    }
+
+    /**
      * The force the motor exerted on B along the axis in the last tick, averaged over it.
      *
      * @return the signed force (mass·px/s²)
@@ -196,6 +214,24 @@ public final class PrismaticJoint extends TwoBodyConstraint {
     /** Removes the spring. */
     public void disableSpring() {
         axis.disableSpring();
+    }
+
+    /**
+     * The spring's frequency.
+     *
+     * @return the natural frequency (Hz); 0 without a spring
+     */
+    public float getSpringHertz() {
+        return axis.isSpringEnabled() ? axis.getSpringHertz() : 0f;
+    }
+
+    /**
+     * The spring's damping ratio.
+     *
+     * @return the damping ratio
+     */
+    public float getSpringDampingRatio() {
+        return axis.getSpringDampingRatio();
     }
 
     /**

@@ -154,6 +154,51 @@ public final class WheelJoint extends TwoBodyConstraint {
     }
 
     /**
+     * Whether the motor is on.
+     *
+     * @return true after {@link #setMotor}
+     */
+    public boolean isMotorEnabled() {
+        return drive.isMotorEnabled();
+    }
+
+    /**
+     * The motor's torque cap.
+     *
+     * @return the largest torque (mass·px²/s²)
+     */
+    public float getMaxMotorTorque() {
+        return drive.getMaxMotorForce();
+    }
+
+    /**
+     * Whether the suspension's travel is limited.
+     *
+     * @return true after {@link #setLimits}
+     */
+    public boolean isLimitEnabled() {
+        return suspension.isLimitEnabled();
+    }
+
+    /**
+     * The lower travel limit.
+     *
+     * @return the limit (px)
+     */
+    public float getLowerLimit() {
+        return suspension.getLower();
+    }
+
+    /**
+     * The upper travel limit.
+     *
+     * @return the limit (px)
+     */
+    public float getUpperLimit() {
+        return suspension.getUpper();
+    }
+
+    /**
      * The torque the motor exerted on the wheel in the last tick, averaged over it.
      *
      * @return the signed torque (mass·px²/s²)

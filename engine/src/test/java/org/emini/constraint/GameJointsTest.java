@@ -107,6 +107,31 @@ class GameJointsTest {
     }
 
     @Test
+    void settingsReadBack() {
+        World world = new World();
+        Body a = new Body(0f, 0f, Shape.createCircle(5f), true);
+        Body b = new Body(30f, 0f, Shape.createCircle(5f), true);
+        world.addBody(a);
+        world.addBody(b);
+        WheelJoint wheel = WheelJoint.atWorldPoint(a, b, 30f, 0f, 0f, 1f);
+        wheel.setLimits(-5f, 8f);
+        wheel.setMotor(3f, 40f);
+        assertTrue(wheel.isLimitEnabled() && wheel.isMotorEnabled());
+        assertEquals(-5f, wheel.getLowerLimit());
+        assertEquals(8f, wheel.getUpperLimit());
+        assertEquals(3f, wheel.getMotorSpeed());
+        assertEquals(40f, wheel.getMaxMotorTorque());
+        PrismaticJoint slide = PrismaticJoint.atWorldPoint(a, b, 30f, 0f, 1f, 0f);
+        assertEquals(0f, slide.getSpringHertz());
+        slide.setMotor(-25f, 100f);
+        slide.setSpring(2f, 0.5f);
+        assertEquals(-25f, slide.getMotorSpeed());
+        assertEquals(100f, slide.getMaxMotorForce());
+        assertEquals(2f, slide.getSpringHertz());
+        assertEquals(0.5f, slide.getSpringDampingRatio());
+    }
+
+    @Test
     void badSettingsAreRefusedNamingTheCallAndTheValue() {
         World world = new World();
         Body a = new Body(0f, 0f, Shape.createCircle(5f), true);
