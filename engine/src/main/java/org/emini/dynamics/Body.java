@@ -59,7 +59,8 @@ public final class Body {
     Simulation world;
     int id = -1;
     int worldIndex = -1;
-    int proxyId = -1;
+    // The keys of the shape's parts in the world's PartKeys, one per part: each names its broadphase proxy.
+    int[] partKeys = NO_KEYS;
     int slot = -1;
     boolean proxyDirty;
     int solverIndex;
@@ -75,6 +76,7 @@ public final class Body {
     Body[] visitors = NO_BODIES;
     int visitorCount;
     private static final Body[] NO_BODIES = new Body[0];
+    private static final int[] NO_KEYS = new int[0];
     // Bodies this one never collides with (World.disableCollision): a joint's "collide connected" off.
     Body[] noCollide;
     int noCollideCount;

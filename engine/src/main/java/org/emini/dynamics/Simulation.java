@@ -84,7 +84,9 @@ public abstract class Simulation {
 
     private final BroadPhase broadPhase;
     final ProxySync proxies;
-    private final ContactManager contacts = new ContactManager(this);
+    // What each broadphase proxy stands for: a body's part.
+    private final PartKeys partKeys = new PartKeys();
+    private final ContactManager contacts = new ContactManager(this, partKeys);
     final Solver solver = new Solver(this);
     private final ElementList<Constraint> constraints = new ElementList<Constraint>(changes, new Constraint[8], "Constraint",
         "constraint");
@@ -102,7 +104,7 @@ public abstract class Simulation {
     /** Creates an empty world with the original engine's defaults. */
     protected Simulation() {
         broadPhase = new BroadPhase(settings.getAabbMargin());
-        proxies = new ProxySync(this, broadPhase, contacts);
+        proxies = new ProxySync(this, broadPhase, contacts, partKeys);
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -370,8 +372,14 @@ public abstract class Simulation {
         return bodies.bySlot(slot);
     }
 
-    int getBroadPhaseUserData(int proxyId) {
-        return broadPhase.getUserData(proxyId);
+    /** The broadphase proxy of a body's part. */
+    int proxyOf(Body b, int part) {
+        return partKeys.proxy(b.partKeys[part]);
+    }
+
+    /** The body a broadphase proxy stands for (one of its parts). */
+    Body bodyOfProxy(int proxyId) {
+        return partKeys.body(broadPhase.getUserData(proxyId));
     }
 
     /** A body became a sensor or solid again. */
