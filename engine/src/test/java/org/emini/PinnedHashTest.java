@@ -70,7 +70,7 @@ class PinnedHashTest {
         assertTrue(scene.world.getParticleEmitter(0).getParticleCount() > 0, "particles");
     }
 
-    static final long PINNED_FIXED = 0x665B73254B7C20A3L;
-    static final long PINNED_EVERYTHING_DYNAMIC = 0x665B73254B7C20A3L;
+    static final long PINNED_FIXED = 0x36C33675BE8AC4E2L;
+    static final long PINNED_EVERYTHING_DYNAMIC = 0x978B4AD260FF6AB1L;
     static final long PINNED_DYNAMIC = 0x6404D0B2607B98CEL;
 }
