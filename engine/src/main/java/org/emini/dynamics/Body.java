@@ -61,7 +61,6 @@ public final class Body {
     int worldIndex = -1;
     // The keys of the shape's parts in the world's PartKeys, one per part: each names its broadphase proxy.
     int[] partKeys = NO_KEYS;
-    int slot = -1;
     boolean proxyDirty;
     int solverIndex;
     // Where the last tick's StepData lists this body (checked there).

@@ -368,10 +368,6 @@ public abstract class Simulation {
         return bodies.findById(id);
     }
 
-    Body bodyInSlot(int slot) {
-        return bodies.bySlot(slot);
-    }
-
     /** The broadphase proxy of a body's part. */
     int proxyOf(Body b, int part) {
         return partKeys.proxy(b.partKeys[part]);
