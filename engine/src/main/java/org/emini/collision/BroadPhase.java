@@ -106,7 +106,7 @@ public final class BroadPhase {
             return;
         }
         this.margin = margin;
-        for (int proxyId = 0; proxyId < proxies.highWater; proxyId++) {
+        for (int proxyId = 0; proxyId < proxies.highWater(); proxyId++) {
             int leaf = proxies.node[proxyId];
             if (leaf != NULL) {
                 trees[proxies.tree[proxyId]].inflate(leaf, grow);
@@ -586,7 +586,7 @@ public final class BroadPhase {
      * @return the proxy count
      */
     public int getProxyCount() {
-        return proxies.count;
+        return proxies.count();
     }
 
     /**
@@ -640,11 +640,11 @@ public final class BroadPhase {
      */
     public void validate() {
         int leaves = trees[STATIC_TREE].validate("BroadPhase") + trees[DYNAMIC_TREE].validate("BroadPhase");
-        checkState(leaves == proxies.count, "%d leaves but %d proxies", leaves, proxies.count);
+        checkState(leaves == proxies.count(), "%d leaves but %d proxies", leaves, proxies.count());
 
         int live = 0;
-        boolean[] isLive = new boolean[proxies.highWater];
-        for (int p = 0; p < proxies.highWater; p++) {
+        boolean[] isLive = new boolean[proxies.highWater()];
+        for (int p = 0; p < proxies.highWater(); p++) {
             int node = proxies.node[p];
             if (node == NULL) {
                 continue;
@@ -655,8 +655,8 @@ public final class BroadPhase {
                     proxies.tree[p]);
             checkState(trees[proxies.tree[p]].holds(node, p), "proxy %d points to node %d, not its leaf", p, node);
         }
-        checkState(live == proxies.count, "%d live proxies, count says %d", live, proxies.count);
-        moved.validate(isLive, proxies.highWater);
+        checkState(live == proxies.count(), "%d live proxies, count says %d", live, proxies.count());
+        moved.validate(isLive, proxies.highWater());
 
         proxies.validateFreeList();
     }

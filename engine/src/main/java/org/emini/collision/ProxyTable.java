@@ -1,11 +1,12 @@
 package org.emini.collision;
 
 import java.util.Arrays;
+import org.emini.internal.IdPool;
 
 /**
- * The broadphase's proxies by id: each live proxy's leaf, tree and user data. Ids stay dense in
- * {@code [0, highWater)}, apart from node ids, and freed ids are reused last-freed first, so the
- * same calls give the same ids.
+ * The broadphase's proxies by id: each live proxy's leaf, tree and user data. Ids come from an
+ * {@link IdPool}: dense in {@code [0, highWater)}, apart from node ids, and freed ids are reused
+ * last-freed first, so the same calls give the same ids.
  */
 final class ProxyTable {
     static final int NULL = -1;
@@ -15,61 +16,48 @@ final class ProxyTable {
     int[] userData;
     /** The tree a live proxy is in (the broadphase's tree index). */
     byte[] tree;
-    /** Next free id of a free id. */
-    private int[] nextFree;
-    int highWater;
-    int count;
-    private int freeHead = NULL;
+    private final IdPool ids;
 
     ProxyTable(int capacity) {
         node = new int[capacity];
         userData = new int[capacity];
         tree = new byte[capacity];
-        nextFree = new int[capacity];
+        ids = new IdPool(capacity);
     }
 
     /** @return a new id: the most recently freed, or else the smallest never used */
     int allocate() {
-        int id;
-        if (freeHead != NULL) {
-            id = freeHead;
-            freeHead = nextFree[id];
-        } else {
-            if (highWater == node.length) {
-                int capacity = highWater * 2;
-                node = Arrays.copyOf(node, capacity);
-                userData = Arrays.copyOf(userData, capacity);
-                tree = Arrays.copyOf(tree, capacity);
-                nextFree = Arrays.copyOf(nextFree, capacity);
-            }
-            id = highWater++;
+        int id = ids.allocate();
+        if (id == node.length) {
+            int capacity = 2 * id;
+            node = Arrays.copyOf(node, capacity);
+            userData = Arrays.copyOf(userData, capacity);
+            tree = Arrays.copyOf(tree, capacity);
         }
-        nextFree[id] = NULL;
-        count++;
         return id;
     }
 
     void free(int id) {
         node[id] = NULL;
-        nextFree[id] = freeHead;
-        freeHead = id;
-        count--;
+        ids.free(id);
     }
 
     boolean isLive(int id) {
-        return id >= 0 && id < highWater && node[id] != NULL;
+        return ids.isLive(id);
+    }
+
+    /** One more than the largest id ever used. */
+    int highWater() {
+        return ids.high();
+    }
+
+    /** The live proxies. */
+    int count() {
+        return ids.count();
     }
 
     /** Checks that the free list holds exactly the free ids. */
     void validateFreeList() {
-        int free = 0;
-        for (int p = freeHead; p != NULL; p = nextFree[p]) {
-            DynamicTree.check(p >= 0 && p < highWater && node[p] == NULL, "BroadPhase",
-                "proxy free list holds live or bad id %d", p, 0);
-            free++;
-            DynamicTree.check(free <= highWater - count, "BroadPhase", "proxy free list too long at %d", p, free);
-        }
-        DynamicTree.check(free + count == highWater, "BroadPhase", "%d free proxy ids, expected %d", free,
-            highWater - count);
+        ids.validate("BroadPhase");
     }
 }

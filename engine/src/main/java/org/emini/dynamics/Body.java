@@ -59,8 +59,8 @@ public final class Body {
     Simulation world;
     int id = -1;
     int worldIndex = -1;
-    int proxyId = -1;
-    int slot = -1;
+    // The keys of the shape's parts in the world's PartKeys, one per part: each names its broadphase proxy.
+    int[] partKeys = NO_KEYS;
     boolean proxyDirty;
     int solverIndex;
     // Where the last tick's StepData lists this body (checked there).
@@ -75,6 +75,7 @@ public final class Body {
     Body[] visitors = NO_BODIES;
     int visitorCount;
     private static final Body[] NO_BODIES = new Body[0];
+    private static final int[] NO_KEYS = new int[0];
     // Bodies this one never collides with (World.disableCollision): a joint's "collide connected" off.
     Body[] noCollide;
     int noCollideCount;

@@ -79,8 +79,9 @@ final class BodyQuery implements QueryCallback {
 
     @Override
     public boolean reportProxy(int proxyId) {
-        Body b = world.bodyInSlot(broadPhase.getUserData(proxyId));
-        if (b != null && !b.awake && !b.proxyDirty) {
+        // A multi-shape body comes once per part near the box; the list drops the repeats.
+        Body b = world.bodyOfProxy(proxyId);
+        if (!b.awake && !b.proxyDirty) {
             test(b);
         }
         return true;

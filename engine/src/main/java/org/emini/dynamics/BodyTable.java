@@ -1,9 +1,9 @@
 package org.emini.dynamics;
 
 /**
- * The world's bodies three ways: in insertion order (the index of {@link Simulation#getBody}, which events
- * and the original's ids use), by slot (the broadphase's user data; slots are reused after removal),
- * and by id (ids grow with insertion and removal keeps the order, so a binary search finds them).
+ * The world's bodies two ways: in insertion order (the index of {@link Simulation#getBody}, which events
+ * and the original's ids use), and by id (ids grow with insertion and removal keeps the order, so a
+ * binary search finds them). The broadphase names bodies by their parts' keys ({@link PartKeys}).
  *
  * <p>Removal leaves a hole that the next ordered read closes in one pass: removing k bodies costs
  * O(k) plus one O(n) compaction, not O(k·n).
@@ -13,39 +13,23 @@ final class BodyTable {
     // Entries in ordered, holes included, and holes not yet closed.
     private int end;
     private int holes;
-    private Body[] slots = new Body[16];
-    private int[] freeSlots = new int[16];
-    private int freeSlotCount;
-    private int slotHigh;
     private int nextId;
 
-    /** Gives the body its id, slot and index and appends it. */
+    /** Gives the body its id and index and appends it. */
     void add(Body body) {
         closeHoles();
-        int slot = freeSlotCount > 0 ? freeSlots[--freeSlotCount] : slotHigh++;
-        if (slot == slots.length) {
-            slots = java.util.Arrays.copyOf(slots, 2 * slots.length);
-        }
-        slots[slot] = body;
         if (end == ordered.length) {
             ordered = java.util.Arrays.copyOf(ordered, 2 * end);
         }
         body.id = nextId++;
-        body.slot = slot;
         body.worldIndex = end;
         ordered[end++] = body;
     }
 
-    /** Takes the body out, leaving a hole in the order, and frees its slot. */
+    /** Takes the body out, leaving a hole in the order. */
     void remove(Body body) {
-        slots[body.slot] = null;
-        if (freeSlotCount == freeSlots.length) {
-            freeSlots = java.util.Arrays.copyOf(freeSlots, 2 * freeSlotCount);
-        }
-        freeSlots[freeSlotCount++] = body.slot;
         ordered[body.worldIndex] = null;
         holes++;
-        body.slot = -1;
         body.worldIndex = -1;
     }
 
@@ -57,10 +41,6 @@ final class BodyTable {
     Body[] ordered() {
         closeHoles();
         return ordered;
-    }
-
-    Body bySlot(int slot) {
-        return slots[slot];
     }
 
     Body findById(int id) {

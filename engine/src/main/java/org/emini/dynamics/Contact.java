@@ -12,8 +12,9 @@ package org.emini.dynamics;
  * look it up with {@link Simulation#findContact(long)}, which answers null once it has ended. A
  * contact with no points is a pair that is near but not touching.
  *
- * <p>A body with a {@link org.emini.shape.MultiShape} has one contact per pair of parts (and per
- * part and landscape segment); {@link #getPartA()} and {@link #getPartB()} tell which. A landscape
+ * <p>A body with a {@link org.emini.shape.MultiShape} has one contact per pair of parts whose
+ * bounding boxes are near each other (and per part and landscape segment near it): each part has its
+ * own box in the broadphase. {@link #getPartA()} and {@link #getPartB()} tell which. A landscape
  * contact ({@link #isLandscape()}) has the body as A and no body B; its normal points from the
  * body to the segment.
  */
@@ -22,6 +23,9 @@ public final class Contact {
     Body bodyB;
     int partA;
     int partB;
+    // The parts' keys in the world's PartKeys (their broadphase proxies); keyB is −1 for a landscape contact.
+    int keyA = -1;
+    int keyB = -1;
     // Landscape contacts: the segment's slot and stamp in the landscape; slot −1 for body pairs.
     Landscape landscape;
     int segmentSlot = -1;

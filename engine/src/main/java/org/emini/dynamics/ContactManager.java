@@ -14,12 +14,13 @@ import org.emini.shape.Shape;
 /**
  * Where contacts are born, updated and forgotten.
  *
- * <p>A contact is created when the broadphase reports that two bodies' fat boxes began to overlap
- * and the pair may collide, or when a dynamic body's fat box comes to overlap a landscape segment's
- * box; it is updated by the narrowphase every tick and destroyed when the boxes separate or the
- * pair's filter changes. A multi-shape body gets one contact per part (times the other side's
- * parts), so each keeps its own feature ids for warm starting. Contact objects are pooled, so
- * steady-state ticking allocates nothing.
+ * <p>Every part of a body's shape has its own broadphase proxy (one for a plain shape, one per part
+ * of a multi-shape; {@link PartKeys}). A contact is created when the broadphase reports that two
+ * parts' fat boxes began to overlap and their bodies may collide, or when a dynamic body's part's fat
+ * box comes to overlap a landscape segment's box; it is updated by the narrowphase every tick and
+ * destroyed when the boxes separate or the pair's filter changes. So a multi-shape body has one
+ * contact per pair of parts that are near (and per part and segment), each with its own feature ids
+ * for warm starting. Contact objects are pooled, so steady-state ticking allocates nothing.
  *
  * <p>Each tick only the active contacts, those of the bodies being simulated, are collided and
  * solved; they are kept in contact-array order so the result does not depend on how they were
@@ -27,6 +28,7 @@ import org.emini.shape.Shape;
  */
 final class ContactManager implements PairCallback, QueryCallback {
     private final Simulation world;
+    private final PartKeys parts;
     private final Collider collider = new Collider();
     private final Manifold manifold = new Manifold();
     private final Segment segment = new Segment();
@@ -54,10 +56,9 @@ final class ContactManager implements PairCallback, QueryCallback {
     private Landscape landscape;
     private int landscapeModCount;
     private int landscapeEpoch;
-    private Body queryBody;
-
-    ContactManager(Simulation world) {
+    ContactManager(Simulation world, PartKeys keys) {
         this.world = world;
+        this.parts = keys;
     }
 
     /**
@@ -91,26 +92,19 @@ final class ContactManager implements PairCallback, QueryCallback {
         return s.getType() == Shape.TYPE_MULTI ? ((MultiShape) s).getShape(i) : s;
     }
 
+    /** Two parts' fat boxes began to overlap: a contact for them, unless they have one or may not collide. */
     @Override
-    public void addPair(int slotA, int slotB) {
-        Body a = world.bodyInSlot(slotA);
-        Body b = world.bodyInSlot(slotB);
-        if (a == null || b == null || a == b || !shouldCollide(a, b)) {
+    public void addPair(int keyA, int keyB) {
+        Body a = parts.body(keyA);
+        Body b = parts.body(keyB);
+        // Two parts of one body overlap: nothing to do.
+        if (a == b || !shouldCollide(a, b)) {
             return;
         }
-        if (pairs.contains(PairCounts.bodies(slotA, slotB)) || !filterAccepts(a, b)) {
+        if (pairs.contains(PairCounts.parts(keyA, keyB)) || !filterAccepts(a, b) || full(1)) {
             return;
         }
-        int na = partCount(a.getShape());
-        int nb = partCount(b.getShape());
-        if (full(na * nb)) {
-            return;
-        }
-        for (int i = 0; i < na; i++) {
-            for (int j = 0; j < nb; j++) {
-                create(a, b, i, j);
-            }
-        }
+        create(a, b, keyA, keyB);
     }
 
     /** Whether n more contacts would exceed the world's capacity (noted for the tick if so). */
@@ -129,12 +123,15 @@ final class ContactManager implements PairCallback, QueryCallback {
         capacityReached |= broadPhase.isPairLimitReached();
     }
 
-    private Contact create(Body a, Body b, int partA, int partB) {
+    /** A contact of part keyA of body a and part keyB of body b, or of a's part and a segment when b is null (keyB −1). */
+    private Contact create(Body a, Body b, int keyA, int keyB) {
         Contact c = obtain();
         c.bodyA = a;
         c.bodyB = b;
-        c.partA = partA;
-        c.partB = partB;
+        c.keyA = keyA;
+        c.keyB = keyB;
+        c.partA = parts.part(keyA);
+        c.partB = b != null ? parts.part(keyB) : 0;
         c.pointCount = 0;
         c.touching = false;
         c.filterDirty = false;
@@ -165,7 +162,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         c.index = count;
         contacts[count++] = c;
         if (b != null) {
-            pairs.add(PairCounts.bodies(a.slot, b.slot));
+            pairs.add(PairCounts.parts(keyA, keyB));
         }
         return c;
     }
@@ -238,8 +235,7 @@ final class ContactManager implements PairCallback, QueryCallback {
             c.touching = false;
             world.stepData.contactEnded(c);
         }
-        pairs.remove(c.bodyB != null ? PairCounts.bodies(c.bodyA.slot, c.bodyB.slot)
-            : PairCounts.segment(c.bodyA.slot, c.segmentSlot));
+        pairs.remove(c.bodyB != null ? PairCounts.parts(c.keyA, c.keyB) : PairCounts.segment(c.keyA, c.segmentSlot));
         unlink(c, c.bodyA, c.prevA, c.nextA);
         if (c.bodyB != null) {
             unlink(c, c.bodyB, c.prevB, c.nextB);
@@ -256,6 +252,8 @@ final class ContactManager implements PairCallback, QueryCallback {
         c.bodyB = null;
         c.landscape = null;
         c.segmentSlot = -1;
+        c.keyA = -1;
+        c.keyB = -1;
         c.prevA = c.nextA = c.prevB = c.nextB = null;
         if (poolCount == pool.length) {
             Contact[] grown = new Contact[poolCount * 2];
@@ -306,29 +304,42 @@ final class ContactManager implements PairCallback, QueryCallback {
     }
 
     /**
-     * Creates the missing contacts of a simulated body with the segments its fat box overlaps, when
-     * that box has moved or the landscape changed since the body last looked.
+     * Whether a simulated body must look for its segments although its boxes did not move: the
+     * landscape changed, or the body was told to ({@link #forgetLandscape}). Either way it counts as
+     * having looked from now on.
      */
-    void findLandscapeContacts(Body b, boolean moved, BroadPhase broadPhase) {
-        if (!moved && b.landscapeEpoch == landscapeEpoch) {
-            return;
-        }
+    boolean landscapeStale(Body b) {
+        boolean stale = b.landscapeEpoch != landscapeEpoch;
         b.landscapeEpoch = landscapeEpoch;
+        return stale;
+    }
+
+    /**
+     * Creates the missing contacts of a simulated body's part with the segments its proxy's fat box
+     * overlaps; called when that box has moved or the body's look is stale ({@link #landscapeStale}).
+     * Each part meets the segments near it alone, as it meets other bodies' parts.
+     */
+    void findLandscapeContacts(Body b, int part, int key, int proxy, BroadPhase broadPhase) {
         if (!b.isDynamic() || b.sensor || landscape.getSegmentCount() == 0) {
             return;
         }
-        queryBody = b;
         foundCount = 0;
-        int p = b.proxyId;
-        landscape.query(broadPhase.getFatMinX(p), broadPhase.getFatMinY(p), broadPhase.getFatMaxX(p),
-            broadPhase.getFatMaxY(p), this);
+        landscape.query(broadPhase.getFatMinX(proxy), broadPhase.getFatMinY(proxy), broadPhase.getFatMaxX(proxy),
+            broadPhase.getFatMaxY(proxy), this);
         // In slot order, not the index tree's: a segment added far away must not reorder the contacts
         // (and so the solve) of a body here.
         HeapSort.sort(foundSlots, foundCount);
         for (int i = 0; i < foundCount; i++) {
-            addLandscapeContacts(b, (int) foundSlots[i]);
+            int slot = (int) foundSlots[i];
+            long pair = PairCounts.segment(key, slot);
+            if (!pairs.contains(pair) && !full(1)) {
+                Contact c = create(b, null, key, -1);
+                c.landscape = landscape;
+                c.segmentSlot = slot;
+                c.segmentStamp = landscape.stampOf(slot);
+                pairs.add(pair);
+            }
         }
-        queryBody = null;
     }
 
     /** Makes a body look for its segments again when it is next simulated. */
@@ -343,22 +354,6 @@ final class ContactManager implements PairCallback, QueryCallback {
         }
         foundSlots[foundCount++] = slot;
         return true;
-    }
-
-    private void addLandscapeContacts(Body b, int slot) {
-        long key = PairCounts.segment(b.slot, slot);
-        // A body's parts touch a segment together: they are created and destroyed together.
-        int parts = partCount(b.getShape());
-        if (pairs.contains(key) || full(parts)) {
-            return;
-        }
-        for (int k = 0; k < parts; k++) {
-            Contact c = create(b, null, k, 0);
-            c.landscape = landscape;
-            c.segmentSlot = slot;
-            c.segmentStamp = landscape.stampOf(slot);
-            pairs.add(key);
-        }
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -464,7 +459,7 @@ final class ContactManager implements PairCallback, QueryCallback {
                 return false;
             }
         }
-        if (!broadPhase.testOverlap(a.proxyId, b.proxyId)) {
+        if (!broadPhase.testOverlap(parts.proxy(c.keyA), parts.proxy(c.keyB))) {
             destroy(c);
             return false;
         }
@@ -482,7 +477,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         Body a = c.bodyA;
         Landscape l = c.landscape;
         int slot = c.segmentSlot;
-        int p = a.proxyId;
+        int p = parts.proxy(c.keyA);
         if ((c.filterDirty && (!a.isDynamic() || a.sensor)) || l.stampOf(slot) != c.segmentStamp
             || !l.overlaps(slot, broadPhase.getFatMinX(p), broadPhase.getFatMinY(p), broadPhase.getFatMaxX(p),
                 broadPhase.getFatMaxY(p))) {

@@ -60,6 +60,9 @@ final class ContinuousSolver implements QueryCallback {
     private float hitX;
     private float hitY;
     private float hitAngle;
+    // The multi-shape bodies this sweep has met: the broadphase reports one once per part near it.
+    private Body[] met = new Body[4];
+    private int metCount;
 
     private final LandscapeSweep segments = new LandscapeSweep();
 
@@ -106,6 +109,7 @@ final class ContinuousSolver implements QueryCallback {
             cy1 = y1 + st[o + S] * lx + st[o + C] * ly;
             fraction = 1f;
             kinematicHit = false;
+            metCount = 0;
             shape.computeAabb(x0, y0, b.c, b.s, box);
             shape.computeAabb(x1, y1, st[o + C], st[o + S], box2);
             float minX = Math.min(box[0], box2[0]);
@@ -141,19 +145,21 @@ final class ContinuousSolver implements QueryCallback {
         }
         moving = null;
         state = null;
+        java.util.Arrays.fill(met, 0, metCount, null);
         return null;
     }
 
     private Body escaped(Body b) {
         moving = null;
         state = null;
+        java.util.Arrays.fill(met, 0, metCount, null);
         return b;
     }
 
     @Override
     public boolean reportProxy(int proxyId) {
-        Body other = world.bodyInSlot(world.getBroadPhaseUserData(proxyId));
-        if (other == null || other == moving || !world.shouldCollide(moving, other)) {
+        Body other = world.bodyOfProxy(proxyId);
+        if (other == moving || !world.shouldCollide(moving, other) || alreadyMet(other)) {
             return true;
         }
         // Bullets sweep against everything; other bodies only against static and kinematic ones.
@@ -182,6 +188,23 @@ final class ContinuousSolver implements QueryCallback {
             kinematicHit = false;
         }
         return true;
+    }
+
+    /** Whether the sweep has met a multi-shape body already (through another part); notes it if not. */
+    private boolean alreadyMet(Body other) {
+        if (other.partKeys.length == 1) {
+            return false;
+        }
+        for (int i = 0; i < metCount; i++) {
+            if (met[i] == other) {
+                return true;
+            }
+        }
+        if (metCount == met.length) {
+            met = java.util.Arrays.copyOf(met, 2 * metCount);
+        }
+        met[metCount++] = other;
+        return false;
     }
 
     /**

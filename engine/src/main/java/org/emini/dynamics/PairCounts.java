@@ -1,10 +1,11 @@
 package org.emini.dynamics;
 
 /**
- * How many contacts each pair has (a body pair, or a body and a landscape segment), so that "is
- * this pair already in contact?" costs O(1) rather than a walk of a body's contact list: in a crowd
- * every body has hundreds of contacts, and the walks made the first tick of 1,000 circles created in
- * one spot cubic (18 s).
+ * How many contacts each pair has (a pair of body parts, or a body part and a landscape segment), so
+ * that "is this pair already in contact?" costs O(1) rather than a walk of a body's contact list: in
+ * a crowd every body has hundreds of contacts, and the walks made the first tick of 1,000 circles
+ * created in one spot cubic (18 s). Parts are named by their keys ({@link PartKeys}); a pair has one
+ * contact.
  *
  * <p>Open addressing with linear probing over long keys; 0 marks an empty slot (no key is 0). The
  * table doubles at half full and is never shrunk, so steady-state ticks allocate nothing; removal
@@ -16,14 +17,14 @@ final class PairCounts {
     private int[] counts = new int[64];
     private int size;
 
-    /** The key of two bodies, by their world slots, in either order. */
-    static long bodies(int slotA, int slotB) {
-        return slotA < slotB ? (long) slotA << 32 | slotB : (long) slotB << 32 | slotA;
+    /** The key of two parts, by their part keys, in either order. */
+    static long parts(int keyA, int keyB) {
+        return keyA < keyB ? (long) keyA << 32 | keyB : (long) keyB << 32 | keyA;
     }
 
-    /** The key of a body and a landscape segment slot (the sign bit keeps it apart from body pairs). */
-    static long segment(int bodySlot, int segmentSlot) {
-        return Long.MIN_VALUE | (long) bodySlot << 32 | segmentSlot;
+    /** The key of a part and a landscape segment slot (the sign bit keeps it apart from part pairs). */
+    static long segment(int partKey, int segmentSlot) {
+        return Long.MIN_VALUE | (long) partKey << 32 | segmentSlot;
     }
 
     boolean contains(long key) {

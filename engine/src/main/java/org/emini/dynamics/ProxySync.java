@@ -2,38 +2,58 @@ package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
 import org.emini.math.EMath;
+import org.emini.shape.Shape;
 
 /**
- * Keeps a world's broadphase proxies in step with its bodies: one proxy per body, made and dropped
- * with it; each tick, the proxies of the simulated bodies and of the bodies the application moved
- * (the dirty list) are moved; a change of shape, kind or layers re-files the proxy and makes the
- * body look for its landscape segments again.
+ * Keeps a world's broadphase proxies in step with its bodies: one proxy per part of a body's shape
+ * (one for a plain shape), made and dropped with the body, so that contacts exist only for the parts
+ * whose fat boxes overlap (a body inside a hollow multi-shape box meets the wall it is near, not all
+ * four). Each tick, the proxies of the simulated bodies and of the bodies the application moved (the
+ * dirty list) are moved; a change of shape, kind or layers re-files the proxies and makes the body
+ * look for its landscape segments again.
  */
 final class ProxySync {
     private final Simulation world;
     private final BroadPhase broadPhase;
     private final ContactManager contacts;
+    private final PartKeys keys;
     private final float[] box = new float[4];
     // Bodies whose pose or shape the application changed since the last tick.
     Body[] dirty = new Body[16];
     int dirtyCount;
 
-    ProxySync(Simulation world, BroadPhase broadPhase, ContactManager contacts) {
+    ProxySync(Simulation world, BroadPhase broadPhase, ContactManager contacts, PartKeys keys) {
         this.world = world;
         this.broadPhase = broadPhase;
         this.contacts = contacts;
+        this.keys = keys;
     }
 
+    /** Gives each part of the body's shape a key and a proxy, in part order. */
     void create(Body b) {
         b.proxyDirty = false;
         ContactManager.forgetLandscape(b);
-        b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-        b.proxyId = broadPhase.createProxy(box[0], box[1], box[2], box[3], b.slot, b.isStatic());
+        Shape shape = b.getShape();
+        int n = ContactManager.partCount(shape);
+        if (b.partKeys.length != n) {
+            b.partKeys = new int[n];
+        }
+        boolean isStatic = b.isStatic();
+        for (int k = 0; k < n; k++) {
+            ContactManager.part(shape, k).computeAabb(b.x, b.y, b.c, b.s, box);
+            int key = keys.add(b, k);
+            keys.setProxy(key, broadPhase.createProxy(box[0], box[1], box[2], box[3], key, isStatic));
+            b.partKeys[k] = key;
+        }
     }
 
     void destroy(Body b) {
-        broadPhase.destroyProxy(b.proxyId);
-        b.proxyId = -1;
+        int[] partKeys = b.partKeys;
+        for (int k = 0; k < partKeys.length; k++) {
+            broadPhase.destroyProxy(keys.proxy(partKeys[k]));
+            keys.remove(partKeys[k]);
+            partKeys[k] = -1;
+        }
         b.proxyDirty = false;
     }
 
@@ -48,18 +68,32 @@ final class ProxySync {
         }
     }
 
-    /** A new shape between ticks: its contacts name the old shape's parts, so they start afresh. */
+    /**
+     * A new shape between ticks: its contacts name the old shape's parts, so they start afresh. With
+     * as many parts as before the proxies are kept (and moved next tick); otherwise they are made anew.
+     */
     void shapeChanged(Body b) {
         contacts.destroyContactsOf(b);
-        geometryChanged(b);
-        broadPhase.touchProxy(b.proxyId);
+        if (ContactManager.partCount(b.getShape()) == b.partKeys.length) {
+            geometryChanged(b);
+            for (int key : b.partKeys) {
+                broadPhase.touchProxy(keys.proxy(key));
+            }
+        } else {
+            destroy(b);
+            create(b);
+        }
         ContactManager.forgetLandscape(b);
     }
 
     void filterChanged(Body b) {
         contacts.markFilterDirty(b);
-        broadPhase.setStatic(b.proxyId, b.isStatic());
-        broadPhase.touchProxy(b.proxyId);
+        boolean isStatic = b.isStatic();
+        for (int key : b.partKeys) {
+            int p = keys.proxy(key);
+            broadPhase.setStatic(p, isStatic);
+            broadPhase.touchProxy(p);
+        }
         ContactManager.forgetLandscape(b);
     }
 
@@ -80,23 +114,53 @@ final class ProxySync {
                 continue;
             }
             b.proxyDirty = false;
-            b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-            broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], 0f, 0f);
+            Shape shape = b.getShape();
+            for (int k = 0; k < b.partKeys.length; k++) {
+                ContactManager.part(shape, k).computeAabb(b.x, b.y, b.c, b.s, box);
+                broadPhase.moveProxy(keys.proxy(b.partKeys[k]), box[0], box[1], box[2], box[3], 0f, 0f);
+            }
             ContactManager.forgetLandscape(b);
         }
         dirtyCount = 0;
         for (int i = 0; i < simulatedCount; i++) {
             Body b = simulated[i];
             b.proxyDirty = false;
-            b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-            float dx = b.vx * dt;
-            float dy = b.vy * dt;
-            if (!EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])) {
-                return b;
+            boolean lookAgain = contacts.landscapeStale(b);
+            int[] partKeys = b.partKeys;
+            if (partKeys.length == 1) {
+                if (!movePart(b, b.getShape(), partKeys[0], 0, b.vx * dt, b.vy * dt, lookAgain)) {
+                    return b;
+                }
+                continue;
             }
-            boolean moved = broadPhase.moveProxy(b.proxyId, box[0], box[1], box[2], box[3], dx, dy);
-            contacts.findLandscapeContacts(b, moved, broadPhase);
+            Shape shape = b.getShape();
+            for (int k = 0; k < partKeys.length; k++) {
+                // A part moves with the body's velocity at its centroid: the parts of a spinning body
+                // move although its centre may not.
+                Shape part = ContactManager.part(shape, k);
+                float lx = part.getCentroidX();
+                float ly = part.getCentroidY();
+                float rx = b.c * lx - b.s * ly;
+                float ry = b.s * lx + b.c * ly;
+                if (!movePart(b, part, partKeys[k], k, (b.vx - b.w * ry) * dt, (b.vy + b.w * rx) * dt, lookAgain)) {
+                    return b;
+                }
+            }
         }
         return null;
+    }
+
+    /** Moves one part's proxy and finds its landscape contacts; false when its box or displacement is not finite. */
+    private boolean movePart(Body b, Shape part, int key, int k, float dx, float dy, boolean lookAgain) {
+        float[] box = this.box;
+        part.computeAabb(b.x, b.y, b.c, b.s, box);
+        if (!EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])) {
+            return false;
+        }
+        int proxy = keys.proxy(key);
+        if (broadPhase.moveProxy(proxy, box[0], box[1], box[2], box[3], dx, dy) || lookAgain) {
+            contacts.findLandscapeContacts(b, k, key, proxy, broadPhase);
+        }
+        return true;
     }
 }

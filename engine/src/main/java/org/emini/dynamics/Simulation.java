@@ -86,7 +86,9 @@ public abstract class Simulation {
 
     private final BroadPhase broadPhase;
     final ProxySync proxies;
-    private final ContactManager contacts = new ContactManager(this);
+    // What each broadphase proxy stands for: a body's part.
+    private final PartKeys partKeys = new PartKeys();
+    private final ContactManager contacts = new ContactManager(this, partKeys);
     final Solver solver = new Solver(this);
     /** The most threads {@link #setWorkerCount} takes. */
     public static final int MAX_WORKERS = 64;
@@ -107,7 +109,7 @@ public abstract class Simulation {
     /** Creates an empty world with the original engine's defaults. */
     protected Simulation() {
         broadPhase = new BroadPhase(settings.getAabbMargin());
-        proxies = new ProxySync(this, broadPhase, contacts);
+        proxies = new ProxySync(this, broadPhase, contacts, partKeys);
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -371,12 +373,14 @@ public abstract class Simulation {
         return bodies.findById(id);
     }
 
-    Body bodyInSlot(int slot) {
-        return bodies.bySlot(slot);
+    /** The broadphase proxy of a body's part. */
+    int proxyOf(Body b, int part) {
+        return partKeys.proxy(b.partKeys[part]);
     }
 
-    int getBroadPhaseUserData(int proxyId) {
-        return broadPhase.getUserData(proxyId);
+    /** The body a broadphase proxy stands for (one of its parts). */
+    Body bodyOfProxy(int proxyId) {
+        return partKeys.body(broadPhase.getUserData(proxyId));
     }
 
     /** A body became a sensor or solid again. */

@@ -3,6 +3,7 @@ package org.emini.dynamics;
 import org.emini.collision.BroadPhase;
 import org.emini.collision.QueryCallback;
 import org.emini.internal.HeapSort;
+import org.emini.shape.Shape;
 
 /**
  * The world's simulation area and the bodies it simulates this tick.
@@ -94,11 +95,14 @@ final class SimulationArea implements QueryCallback {
             bp.queryDynamic(minX, minY, maxX, maxY, this);
             world = null;
             broadPhase = null;
-            // World order, so the result does not depend on the tree's shape.
+            // World order, so the result does not depend on the tree's shape; a multi-shape body
+            // is found once per part in the area.
             HeapSort.sort(keys, keyCount);
             ensure(keyCount);
             for (int i = 0; i < keyCount; i++) {
-                bodies[count++] = w.getBody((int) keys[i]);
+                if (i == 0 || keys[i] != keys[i - 1]) {
+                    bodies[count++] = w.getBody((int) keys[i]);
+                }
             }
         }
         for (int i = 0; i < count; i++) {
@@ -108,31 +112,34 @@ final class SimulationArea implements QueryCallback {
             Body b = previous[i];
             previous[i] = null;
             if (!b.awake && b.world == w) {
-                fitFrozen(b, bp);
+                fitFrozen(b, w, bp);
             }
         }
     }
 
     /**
-     * A body that just stopped being simulated keeps its broadphase box until it wakes, but the
-     * solver moved it after that box was last fitted (at the start of its last tick), possibly out
-     * of it: fit it again if so, so that queries of the broadphase (this area's, World.queryBodies)
-     * find it where it is.
+     * A body that just stopped being simulated keeps its broadphase boxes until it wakes, but the
+     * solver moved it after they were last fitted (at the start of its last tick), possibly out of
+     * them: fit each part's again if so, so that queries of the broadphase (this area's,
+     * World.queryBodies) find it where it is.
      */
-    private void fitFrozen(Body b, BroadPhase bp) {
-        b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
-        int p = b.proxyId;
-        if (box[0] < bp.getFatMinX(p) || box[1] < bp.getFatMinY(p) || box[2] > bp.getFatMaxX(p)
-            || box[3] > bp.getFatMaxY(p)) {
-            bp.moveProxy(p, box[0], box[1], box[2], box[3], 0f, 0f);
-            ContactManager.forgetLandscape(b);
+    private void fitFrozen(Body b, Simulation w, BroadPhase bp) {
+        Shape shape = b.getShape();
+        for (int k = 0; k < b.partKeys.length; k++) {
+            ContactManager.part(shape, k).computeAabb(b.x, b.y, b.c, b.s, box);
+            int p = w.proxyOf(b, k);
+            if (box[0] < bp.getFatMinX(p) || box[1] < bp.getFatMinY(p) || box[2] > bp.getFatMaxX(p)
+                || box[3] > bp.getFatMaxY(p)) {
+                bp.moveProxy(p, box[0], box[1], box[2], box[3], 0f, 0f);
+                ContactManager.forgetLandscape(b);
+            }
         }
     }
 
     @Override
     public boolean reportProxy(int proxyId) {
-        Body b = world.bodyInSlot(broadPhase.getUserData(proxyId));
-        if (b == null || b.isStatic() || b.sleeping) {
+        Body b = world.bodyOfProxy(proxyId);
+        if (b.isStatic() || b.sleeping) {
             return true;
         }
         // The fat box overlaps; the body counts as inside when its own box does.

@@ -213,13 +213,15 @@ final class ParticleCollider {
     /**
      * Stops a jump from one point to another at the first landscape segment it would cross (a
      * skin short of it); leaves the end in settledX, settledY.
+     *
+     * @return whether it crossed one
      */
-    private void clipToSegments(float fromX, float fromY, float toX, float toY) {
+    private boolean clipToSegments(float fromX, float fromY, float toX, float toY) {
         ObstacleGrid g = grid;
         settledX = toX;
         settledY = toY;
         if (g.count == g.bodyCount) {
-            return;
+            return false;
         }
         g.gatherPath(fromX, fromY, toX, toY);
         float first = Float.POSITIVE_INFINITY;
@@ -231,6 +233,7 @@ final class ParticleCollider {
                 settledY = ray.y;
             }
         }
+        return first != Float.POSITIVE_INFINITY;
     }
 
     /**
@@ -290,8 +293,13 @@ final class ParticleCollider {
             return false;
         }
         if (best < g.bodyCount && g.count > g.bodyCount) {
-            // Moved onto a body's surface: not across the landscape (clipToSegments keeps best*).
-            clipToSegments(ax + bestT * (bx - ax), ay + bestT * (by - ay), bestX, bestY);
+            // Moved onto a body's surface: not across the landscape (clipToSegments keeps best*). The
+            // jump is also tested from the path's start: the point where the path met the body may
+            // round onto a segment's line (a particle resting on a wall that a body pushes into),
+            // and a jump starting on the line does not count as crossing it.
+            if (!clipToSegments(ax + bestT * (bx - ax), ay + bestT * (by - ay), bestX, bestY)) {
+                clipToSegments(ax, ay, bestX, bestY);
+            }
             bestX = settledX;
             bestY = settledY;
         }

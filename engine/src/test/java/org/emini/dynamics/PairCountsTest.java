@@ -24,7 +24,7 @@ class PairCountsTest {
                 // Few slots, so that keys repeat (multi-part pairs) and probe runs are long.
                 int a = random.nextInt(300);
                 int b = random.nextInt(300);
-                long key = random.nextBoolean() ? PairCounts.segment(a, b) : a == b ? PairCounts.segment(a, a) : PairCounts.bodies(a, b);
+                long key = random.nextBoolean() ? PairCounts.segment(a, b) : a == b ? PairCounts.segment(a, a) : PairCounts.parts(a, b);
                 table.add(key);
                 if (expected.merge(key, 1, Integer::sum) == 1) {
                     live.add(key);
@@ -58,8 +58,8 @@ class PairCountsTest {
 
     @Test
     void bodyAndSegmentKeysAreApartAndOrderFree() {
-        assertEquals(PairCounts.bodies(3, 7), PairCounts.bodies(7, 3));
-        assertTrue(PairCounts.bodies(3, 7) != PairCounts.segment(3, 7));
-        assertTrue(PairCounts.bodies(0, 1) != 0L && PairCounts.segment(0, 0) != 0L);
+        assertEquals(PairCounts.parts(3, 7), PairCounts.parts(7, 3));
+        assertTrue(PairCounts.parts(3, 7) != PairCounts.segment(3, 7));
+        assertTrue(PairCounts.parts(0, 1) != 0L && PairCounts.segment(0, 0) != 0L);
     }
 }
