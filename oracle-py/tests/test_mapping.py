@@ -479,3 +479,46 @@ run: {duration: 1}
     assert approximations == {"landscape face", "world.dynamicIterations"}
     # The pusher is not driven (the motor is left out), and that is stated, not hidden.
     assert column(doc, "pusher", "vx")[-1] == 0
+
+
+def test_a_wheel_joint_hangs_on_its_suspension_and_turns_with_its_motor(loader):
+    # A 1-mass wheel on a 4 Hz vertical suspension under a static post: it sags g / w^2 (w = 2 pi 4)
+    # along the axis, stays on it, and turns at its motor's 3 rad/s. The spring's stiffness is the
+    # effective mass (the wheel's, the post being static) times w^2, so the sag is exact here.
+    doc = run(loader, """
+world: {ticksPerSecond: 60}
+bodies:
+  - {name: post, shape: {type: rectangle, width: 20, height: 20}, static: true}
+  - {name: wheel, shape: {type: circle, radius: 10}, position: [0, 50]}
+joints:
+  - {type: wheel, bodyA: post, bodyB: wheel, at: [0, 50], axis: [0, 1], spring: {hertz: 4, dampingRatio: 1},
+     motor: {speed: 3, maxTorque: 1.0e6}}
+run: {duration: 3, record: {metrics: [constraintError]}}
+""")
+    sag = 100 / (2 * math.pi * 4) ** 2
+    assert column(doc, "wheel", "y")[-1] == pytest.approx(50 + sag, abs=0.02)
+    assert abs(column(doc, "wheel", "x")[-1]) < 1e-6
+    assert max(doc["metrics"]["constraintError.max"]) < 1e-6
+    assert column(doc, "wheel", "omega")[-1] == pytest.approx(3, rel=1e-3)
+
+
+def test_a_prismatic_slide_keeps_its_angle_and_stops_at_its_limit(loader):
+    # A box on a frictionless 30-degree slide from a static post, limited to 40 px: it slides down the
+    # axis with g sin 30 and stops at the limit, never turning.
+    doc = run(loader, """
+world: {ticksPerSecond: 60}
+bodies:
+  - {name: post, shape: {type: circle, radius: 2}, static: true}
+  - {name: box, shape: {type: rectangle, width: 10, height: 10}, position: [0, 0]}
+joints:
+  - {type: prismatic, bodyA: post, bodyB: box, at: [0, 0], axis: [0.8660254, 0.5], limits: [0, 40]}
+run: {duration: 3, record: {metrics: [constraintError, jointLimits]}}
+""")
+    x, y = column(doc, "box", "x"), column(doc, "box", "y")
+    t = 0.5
+    k = round(t * 60)
+    assert math.hypot(x[k], y[k]) == pytest.approx(0.5 * 100 * 0.5 * t * t, rel=0.05)
+    assert math.hypot(x[-1], y[-1]) == pytest.approx(40, abs=0.5)
+    assert max(abs(a) for a in column(doc, "box", "angle")) < 1e-6
+    assert max(doc["metrics"]["constraintError.max"]) < 0.5
+    assert max(doc["metrics"]["jointLimits.translation"]) < 1

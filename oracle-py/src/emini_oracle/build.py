@@ -46,13 +46,14 @@ class Note:
 @dataclass
 class Link:
     """A pin joint or rigid link, for the constraintError metric: world anchors from local ones."""
-    kind: str  # "pin" (anchor distance), "rigid" (|d - d0|) or "range" (d outside [rest, upper])
+    kind: str  # "pin" (anchor distance), "rigid" (|d - d0|), "range" (d outside [rest, upper]) or "line"
     a: pymunk.Body
     b: pymunk.Body
     anchor_a: tuple
     anchor_b: tuple
     rest: float = 0.0
     upper: float = 0.0
+    axis: tuple = (0.0, 0.0)  # "line": b's anchor off the line through a's anchor along this axis (a's frame)
 
 
 @dataclass
@@ -86,6 +87,7 @@ class Built:
     links: list = field(default_factory=list)
     springs: list = field(default_factory=list)
     hinges: list = field(default_factory=list)
+    slides: list = field(default_factory=list)  # (line Link, lower, upper) of each limited prismatic joint
     unsupported: list = field(default_factory=list)
     approximations: list = field(default_factory=list)
     settings: dict = field(default_factory=dict)
@@ -391,12 +393,16 @@ def _joints(built: Built, joints):
         if kind in ("revolute", "distance", "rope"):
             _game_joint(built, i, j, kind)
             continue
+        if kind == "wheel" or (kind == "prismatic" and "motor" not in j):
+            _slide_joint(built, i, j, kind)
+            continue
         if kind != "pin":
             # Not mapped yet (MAPPING.md, Joints): left out rather than built as a plain pin.
             built.unsupported.append(Note(
                 f"joint type {kind}", f"$.joints[{i}]",
-                f"the oracle does not map the engine's {kind} joint to pymunk yet; it is left out, so its "
-                "bodies are not joined"))
+                ("pymunk has no linear motor, so the oracle does not map a prismatic joint with a motor; "
+                 if kind == "prismatic" else f"the oracle does not map the engine's {kind} joint to pymunk yet; ")
+                + "it is left out, so its bodies are not joined"))
             continue
         if "stiffness" in j:
             built.approximations.append(Note(
@@ -494,6 +500,47 @@ def _game_joint(built: Built, i, j, kind):
     for c in parts:
         c.collide_bodies = bool(j.get("collide", False))
     built.space.add(*parts)
+
+
+# Half-length of a groove without limits, and the arm of a spring along an axis (px): long enough that
+# no scene slides off it, short enough that pymunk's doubles keep the anchors exact.
+_FREE_GROOVE = 1.0e5
+_SPRING_ARM = 1.0e4
+
+
+def _slide_joint(built: Built, i, j, kind):
+    """wheel: GrooveJoint (its ends the limits) + DampedSpring along the axis + SimpleMotor; prismatic (no
+    motor: pymunk has no linear one): GrooveJoint + GearJoint (the angle lock) + DampedSpring. The axis is a
+    world direction at the start, carried by body A. The spring pulls from a point _SPRING_ARM px behind
+    A's anchor with that rest length: as B's anchor stays on the groove, its line is the axis itself, so
+    it pulls along the axis toward translation 0, as Emini's does. MAPPING.md, Joints."""
+    a, b = built.bodies[j["bodyA"]], built.bodies[j["bodyB"]]
+    la, lb = _local_anchors(j, a, b)
+    path = f"$.joints[{i}]"
+    ax, ay = map(float, j["axis"])
+    norm = math.hypot(ax, ay)
+    axis = pymunk.Vec2d(ax / norm, ay / norm).rotated(-a.angle)
+    lo, hi = map(float, j["limits"]) if "limits" in j else (-_FREE_GROOVE, _FREE_GROOVE)
+    pa = pymunk.Vec2d(*la)
+    parts = [pymunk.GrooveJoint(a, b, pa + axis * lo, pa + axis * hi, lb)]
+    if kind == "prismatic":
+        parts.append(pymunk.GearJoint(a, b, b.angle - a.angle, 1.0))
+    if "spring" in j:
+        k, c = _soft(built, path + ".spring", j["spring"], _effective(a.mass, b.mass), f"{kind} spring")
+        parts.append(pymunk.DampedSpring(a, b, pa - axis * _SPRING_ARM, lb, _SPRING_ARM, k, c))
+    if kind == "wheel" and "motor" in j:
+        motor = pymunk.SimpleMotor(b, a, float(j["motor"]["speed"]))
+        motor.max_force = float(j["motor"]["maxTorque"])
+        parts.append(motor)
+    if "breakForce" in j:
+        built.approximations.append(Note("breakForce", path + ".breakForce", "pymunk's constraints never break"))
+    for c in parts:
+        c.collide_bodies = bool(j.get("collide", False))
+    built.space.add(*parts)
+    line = Link("line", a, b, la, lb, axis=(axis.x, axis.y))
+    built.links.append(line)
+    if kind == "prismatic" and "limits" in j:
+        built.slides.append((line, lo, hi))
 
 
 def _springs(built: Built, springs):

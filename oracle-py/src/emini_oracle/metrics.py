@@ -184,6 +184,12 @@ class ConstraintError(Metric):
     def sample(self, tick):
         errors = []
         for link in self.links:
+            if link.kind == "line":
+                # How far b's anchor lies off the axis through a's (the wheel and prismatic rows).
+                pa, pb = link.a.local_to_world(link.anchor_a), link.b.local_to_world(link.anchor_b)
+                axis = pymunk.Vec2d(*link.axis).rotated(link.a.angle)
+                errors.append(abs((pb - pa).cross(axis)))
+                continue
             d = _distance(link.a.local_to_world(link.anchor_a), link.b.local_to_world(link.anchor_b))
             if link.kind == "range":
                 errors.append(max(0.0, link.rest - d, d - link.upper))
@@ -195,18 +201,25 @@ class ConstraintError(Metric):
 
 
 class JointLimits(Metric):
-    """jointLimits.angle: how far the worst limited revolute joint lies outside its limits (rad).
-    .translation is 0: prismatic joints are not mapped (unsupported, so such a scene is not judged)."""
+    """jointLimits.angle: how far the worst limited revolute joint lies outside its limits (rad);
+    .translation: how far the worst limited prismatic joint lies outside its limits (px). A prismatic
+    joint with a motor is not mapped (unsupported, so such a scene is not judged)."""
 
     def __init__(self, built: Built, spec, snapshot: Snapshot):
         self.hinges = built.hinges
+        self.slides = built.slides
 
     def sample(self, tick):
         worst = 0.0
         for h in self.hinges:
             angle = h.b.angle - h.a.angle - h.ref
             worst = max(worst, h.lower - angle, angle - h.upper)
-        return [worst, 0.0]
+        farthest = 0.0
+        for link, lower, upper in self.slides:
+            pa, pb = link.a.local_to_world(link.anchor_a), link.b.local_to_world(link.anchor_b)
+            t = (pb - pa).dot(pymunk.Vec2d(*link.axis).rotated(link.a.angle))
+            farthest = max(farthest, lower - t, t - upper)
+        return [worst, farthest]
 
 
 def _orient(ax, ay, bx, by, cx, cy):
