@@ -75,9 +75,7 @@ final class ContactSolver {
     private static final int WORDS = COLOURS / 64;
     // Slots of colour c: colourStart[c] to colourStart[c + 1] − 1; the overflow group is colour COLOURS.
     private final int[] colourStart = new int[COLOURS + 2];
-    /** Ranges of solver slots that order the contacts within a colour (see colour). */
-    private static final int BUCKETS = 16;
-    private final int[] bucketFill = new int[(COLOURS + 1) * BUCKETS + 1];
+    private final int[] colourFill = new int[COLOURS + 1];
     // Per moving body: the colours its contacts took this tick, one bit each.
     private long[] usedColours = new long[16];
     // The contact graph's breadth-first search (see levels): per body its level, where its
@@ -288,8 +286,9 @@ final class ContactSolver {
             // same side first shears a tall pyramid (its apex drifted 5.7 px in 10 s at 100 rows).
             int from = Math.min(Math.min(depth[ia], depth[ib]), COLOURS - 1);
             int skew = ((ia * 0x9E3779B1) ^ (ib * 0x85EBCA6B)) >>> 31;
-            int colour = freeColour(used, movesA ? ia : -1, movesB ? ib : -1, Math.min(from + skew, COLOURS - 1));
-            if (colour >= COLOURS && from > 0) {
+            int start = Math.min(from + skew, COLOURS - 1);
+            int colour = freeColour(used, movesA ? ia : -1, movesB ? ib : -1, start);
+            if (colour >= COLOURS && start > 0) {
                 colour = freeColour(used, movesA ? ia : -1, movesB ? ib : -1, 0);
             }
             if (colour < COLOURS) {
@@ -311,39 +310,13 @@ final class ContactSolver {
         for (int c = 1; c <= COLOURS + 1; c++) {
             sizes[c] += sizes[c - 1];
         }
-        // Within a colour (whose order does not change the result) the contacts go by the lower
-        // solver slot of their bodies, in BUCKETS ranges of slots: a colour split among threads then
-        // gives each thread much the same bodies in every colour, so their state stays in its cache.
-        // The overflow group keeps its order, which does matter.
-        int[] next = bucketFill;
-        for (int key = 0; key < next.length; key++) {
-            next[key] = 0;
-        }
+        int[] next = colourFill;
+        System.arraycopy(sizes, 0, next, 0, COLOURS + 1);
         for (int ci = 0; ci < contactCount; ci++) {
             int colour = colourOf[ci];
-            if (colour >= 0) {
-                next[bucketKey(all[ci], colour, bodyCount) + 1]++;
-            }
-        }
-        for (int key = 1; key < next.length; key++) {
-            next[key] += next[key - 1];
-        }
-        for (int ci = 0; ci < contactCount; ci++) {
-            int colour = colourOf[ci];
-            slotOf[ci] = colour < 0 ? -1 : next[bucketKey(all[ci], colour, bodyCount)]++;
+            slotOf[ci] = colour < 0 ? -1 : next[colour]++;
         }
         count = sizes[COLOURS + 1];
-    }
-
-    private static int bucketKey(Contact c, int colour, int bodyCount) {
-        if (colour == COLOURS) {
-            return COLOURS * BUCKETS;
-        }
-        int ia = c.bodyA.solverIndex;
-        int ib = c.bodyB != null ? c.bodyB.solverIndex : 0;
-        // The lower slot of a moving body: slot 0 (static) or a kinematic one says nothing of where.
-        int slot = ia == 0 ? ib : ib == 0 ? ia : Math.min(ia, ib);
-        return colour * BUCKETS + (int) ((long) slot * BUCKETS / bodyCount);
     }
 
     /** The lowest colour from {@code from} up that neither body (−1: none) has taken, or COLOURS. */

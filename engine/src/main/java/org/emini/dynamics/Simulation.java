@@ -1114,7 +1114,7 @@ public abstract class Simulation {
      * count. Only the contact passes are shared (not the narrowphase, the joints or the integration),
      * and only colours of at least 256 contacts; the threads spin between the passes and park between
      * ticks. Measured on a 2-core virtual machine the gain is not reliable yet (ten 20-row pyramids
-     * 0.6 to 1.25 times the one-thread speed, rain of 10,000 bodies 0.8 to 1.05): try it on the
+     * 0.5 to 1.25 times the one-thread speed, rain of 10,000 bodies 0.7 to 1.05, across paired runs): try it on the
      * target device. Call with 1 to stop the threads when the world is no longer used.
      *
      * @param workers the threads that share the solve, counting the one that calls {@link #tick()}:
