@@ -12,7 +12,9 @@ import org.junit.jupiter.api.Test;
 /**
  * The pinned determinism hash: the state of {@link EverythingScene} after a fixed number of ticks. A
  * change of this value is a change of the engine's results: make it on purpose, and say in the commit
- * why the results changed (an optimisation must leave it as it is).
+ * why the results changed (an optimisation must leave it as it is). The double flavour's run of this
+ * test (engine-double) has hashes of its own, pinned below beside the float ones: a change to the
+ * engine's source that moves one usually moves both.
  */
 class PinnedHashTest {
     static final int TICKS = 400;
@@ -21,14 +23,14 @@ class PinnedHashTest {
     void everythingSceneWithFixedIterationsKeepsItsPinnedHash() {
         EverythingScene scene = new EverythingScene(false);
         scene.run(TICKS);
-        assertEquals(PINNED_FIXED, scene.hash(), () -> String.format("new hash 0x%016XL", scene.hash()));
+        assertEquals(Flavour.DOUBLE ? PINNED_FIXED_DOUBLE : PINNED_FIXED, scene.hash(), () -> String.format("new hash 0x%016XL", scene.hash()));
     }
 
     @Test
     void everythingSceneWithDynamicIterationsKeepsItsPinnedHash() {
         EverythingScene scene = new EverythingScene(true);
         scene.run(TICKS);
-        assertEquals(PINNED_EVERYTHING_DYNAMIC, scene.hash(), () -> String.format("new hash 0x%016XL", scene.hash()));
+        assertEquals(Flavour.DOUBLE ? PINNED_EVERYTHING_DYNAMIC_DOUBLE : PINNED_EVERYTHING_DYNAMIC, scene.hash(), () -> String.format("new hash 0x%016XL", scene.hash()));
     }
 
     /** A five-row pyramid that settles, then takes a falling box, and a hanging weight: dynamic iterations stop early. */
@@ -56,10 +58,13 @@ class PinnedHashTest {
             world.tick();
             used += world.getLastIterationCount();
         }
-        assertTrue(used < 0.8f * TICKS * world.getConstraintIterations(), "iterations used " + used);
+        // Measured: float 2637 of 4000; double 3260 (it converges early until the box lands at tick 100,
+        // then runs every iteration while its pile creeps at 1e-4 px/s against the float's 0.01-0.2).
+        float share = Flavour.DOUBLE ? 0.85f : 0.8f;
+        assertTrue(used < share * TICKS * world.getConstraintIterations(), "iterations used " + used);
         long h = EverythingScene.bodyHash(world);
         long hash = 31 * h + used;
-        assertEquals(PINNED_DYNAMIC, hash, () -> String.format("new hash 0x%016XL", hash));
+        assertEquals(Flavour.DOUBLE ? PINNED_DYNAMIC_DOUBLE : PINNED_DYNAMIC, hash, () -> String.format("new hash 0x%016XL", hash));
     }
 
     @Test
@@ -73,4 +78,7 @@ class PinnedHashTest {
     static final long PINNED_FIXED = 0xB2FDEF96D1FDE5A9L;
     static final long PINNED_EVERYTHING_DYNAMIC = 0x16F0BB0A24A25F6AL;
     static final long PINNED_DYNAMIC = 0x597F7853A239F1DCL;
+    static final long PINNED_FIXED_DOUBLE = 0x5C28E85E52405A8EL;
+    static final long PINNED_EVERYTHING_DYNAMIC_DOUBLE = 0xD2EC084476D0CF41L;
+    static final long PINNED_DYNAMIC_DOUBLE = 0x794326B1267644B5L;
 }

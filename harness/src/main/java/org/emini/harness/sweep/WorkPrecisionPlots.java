@@ -128,8 +128,8 @@ public final class WorkPrecisionPlots {
             s.setMarkerColor(c);
             if (oracle) {
                 // The oracle's lines dashed: the same colour is the same iteration count.
-                s.setLineStyle(new java.awt.BasicStroke(1.6f, java.awt.BasicStroke.CAP_BUTT, java.awt.BasicStroke.JOIN_MITER,
-                        10f, new float[] {6f, 4f}, 0f));
+                s.setLineStyle(new java.awt.BasicStroke(1.6f, java.awt.BasicStroke.CAP_BUTT, // flavour: float (AWT's)
+                        java.awt.BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f)); // flavour: float (AWT's)
             }
         }
         VectorGraphicsEncoder.saveVectorGraphic(chart, stem.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
