@@ -24,9 +24,10 @@ import org.emini.flavour.JavaTokens.Token;
  *   {@code Long.hashCode(Double.doubleToLongBits(x))} (and raw): still an int, so a hash that mixes them
  *   compiles, and it hashes all 64 bits. {@code Float.intBitsToFloat} has no double counterpart
  *   taking an int: the generator stops with an error naming the place.</li>
- *   <li>In comments and string literals, the words float, floats and Float likewise, so Javadoc links
- *   such as {@code {@link #setMass(float)}} resolve and messages name the number type the code
- *   computes in ("overflows a double"); a YAML tag such as {@code !!float} stays.</li>
+ *   <li>In comments, the words float, floats and Float likewise, so Javadoc links such as
+ *   {@code {@link #setMass(float)}} resolve. String and character literals stay as written: they hold
+ *   option names, keys and tags ({@code "--float-compare"}, {@code "!!float"}) as well as prose, so a
+ *   message of the double flavour may still say "overflows a float".</li>
  * </ol>
  * A line whose comment says {@value #KEEP} keeps its code as written: float there is not the
  * engine's number type but a library's (AWT's strokes in the harness). Nothing else changes: hex integer literals ({@code 0xFF}), identifiers that merely contain "float"
@@ -52,7 +53,7 @@ public final class DoubleFlavour {
     /** The marker comment that keeps a line's code as written. */
     public static final String KEEP = "flavour: float";
 
-    private static final Pattern COMMENT_WORD = Pattern.compile("(?<![!\\w])(float|floats|Float)\\b");
+    private static final Pattern COMMENT_WORD = Pattern.compile("\\b(float|floats|Float)\\b");
 
     private DoubleFlavour() {
     }
@@ -78,7 +79,7 @@ public final class DoubleFlavour {
             out.add(kept.contains(t.line()) ? t.text() : switch (t.kind()) {
                 case IDENTIFIER -> NAMES.getOrDefault(t.text(), t.text());
                 case NUMBER -> number(t.text());
-                case COMMENT, STRING -> words(t.text());
+                case COMMENT -> words(t.text());
                 default -> t.text();
             });
         }

@@ -121,8 +121,10 @@ public final class WorkPrecisionPlots {
             double[] xs = ps.stream().mapToDouble(cost).toArray();
             double[] ys = ps.stream().mapToDouble(y).toArray();
             var s = chart.addSeries(line.getKey(), xs, ys);
-            boolean oracle = !ps.get(0).engine().equals("emini");
-            s.setMarker(oracle ? SeriesMarkers.DIAMOND : SeriesMarkers.CIRCLE);
+            boolean oracle = !ps.get(0).engine().startsWith("emini");
+            // The double flavour's points (engine emini-double) as squares beside the float engine's circles.
+            s.setMarker(oracle ? SeriesMarkers.DIAMOND : ps.get(0).engine().equals("emini") ? SeriesMarkers.CIRCLE
+                    : SeriesMarkers.SQUARE);
             java.awt.Color c = COLOURS[iterations.indexOf(ps.get(0).iterations()) % COLOURS.length];
             s.setLineColor(c);
             s.setMarkerColor(c);
