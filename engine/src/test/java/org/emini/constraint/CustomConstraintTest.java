@@ -175,7 +175,8 @@ class CustomConstraintTest {
         assertEquals(0f, cart.getY(), 0.01f);
         assertEquals(0f, cart.getVelocityX(), 0.01f);
         assertEquals(30f, motor.getForce(), 0.01f);
-        // Weightless: the rail only takes what friction passes on sideways, a small part of it.
-        assertTrue(rail.getForce() < 1f, "rail force " + rail.getForce());
+        // Weightless: the rail only takes what friction passes on sideways, a small part of it. It varies
+        // from tick to tick (measured over ticks 50-100: 0.07 to 1.7 in float, 0.35 to 1.8 in double).
+        assertTrue(rail.getForce() < 0.1f * motor.getForce(), "rail force " + rail.getForce());
     }
 }
