@@ -30,9 +30,10 @@ import org.emini.flavour.JavaTokens.Token;
  *   message of the double flavour may still say "overflows a float".</li>
  * </ol>
  * A line whose comment says {@value #KEEP} keeps its code as written: float there is not the
- * engine's number type but a library's (AWT's strokes in the harness). Nothing else changes: hex integer literals ({@code 0xFF}), identifiers that merely contain "float"
- * and {@code Math.round} (which answers long for a double: code that needs an int casts, in the float
- * source too) are left alone, and a mistake shows as a compile error in the generated source.
+ * engine's number type but a library's (AWT's strokes in the harness). Nothing else changes: hex
+ * integer literals ({@code 0xFF}), identifiers that merely contain "float" and {@code Math.round} (which
+ * answers long for a double: code that needs an int casts, in the float source too) are left alone,
+ * and a mistake shows as a compile error in the generated source.
  */
 public final class DoubleFlavour {
     /** Code names and their double counterparts. */
@@ -53,7 +54,7 @@ public final class DoubleFlavour {
     /** The marker comment that keeps a line's code as written. */
     public static final String KEEP = "flavour: float";
 
-    private static final Pattern COMMENT_WORD = Pattern.compile("\\b(float|floats|Float)\\b");
+    private static final Pattern WORD = Pattern.compile("\\b(float|floats|Float)\\b");
 
     private DoubleFlavour() {
     }
@@ -101,7 +102,7 @@ public final class DoubleFlavour {
     }
 
     private static String words(String text) {
-        Matcher m = COMMENT_WORD.matcher(text);
+        Matcher m = WORD.matcher(text);
         StringBuilder sb = new StringBuilder();
         while (m.find()) {
             m.appendReplacement(sb, NAMES.get(m.group(1)));
