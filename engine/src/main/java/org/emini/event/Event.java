@@ -6,6 +6,7 @@ import org.emini.collision.Manifold;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Contact;
+import org.emini.dynamics.CopyMapping;
 import org.emini.dynamics.Simulation;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
@@ -306,6 +307,23 @@ public final class Event {
      */
     public void setTriggerOnce(boolean once) {
         triggerOnce = once;
+    }
+
+    /**
+     * A copy of this event for a copied world: the same condition, trigger-once setting and user
+     * data, on the copies of its body, sensor body (a sensor outside the world stays shared) and
+     * constraint; nothing reported yet.
+     *
+     * @param mapping the copies of the world's bodies and constraints
+     * @return the copy, not in any world
+     */
+    public Event copy(CopyMapping mapping) {
+        Event copy = new Event(type, body == null ? null : mapping.body(body), shape,
+            constraint == null ? null : mapping.constraint(constraint), sensor == null ? null : mapping.body(sensor),
+            t1, t2, t3, t4);
+        copy.triggerOnce = triggerOnce;
+        copy.userData = userData;
+        return copy;
     }
 
     /** Forgets what a trigger-once event has reported, so everything may be reported again. */
