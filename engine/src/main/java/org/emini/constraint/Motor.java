@@ -30,6 +30,22 @@ import org.emini.math.EMath;
  * in that tick, and must call {@code super.prepare(step)}. The solve itself ({@code warmStart},
  * {@code solve}, {@code finish}) is final. A subclass that is copied with its world overrides
  * {@link #copy(CopyMapping)}, which otherwise makes a plain {@code Motor}.
+ *
+ * <pre>{@code
+ * class SpriteControl extends Motor {
+ *     float jump;                                   // set by the input, px/s upwards
+ *     SpriteControl(Body sprite) {
+ *         super(sprite, 0f, 0f, 1000f);             // linear, x driven by setTargetVelocity(v, 0)
+ *     }
+ *     public void prepare(SolverStep step) {
+ *         if (jump != 0f) {
+ *             getBody().applyAcceleration(0f, -jump, 1f);   // the velocity changes in this tick
+ *             jump = 0f;
+ *         }
+ *         super.prepare(step);
+ *     }
+ * }
+ * }</pre>
  */
 public class Motor implements Constraint {
     private final Body body;
