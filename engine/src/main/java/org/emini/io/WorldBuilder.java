@@ -161,12 +161,7 @@ public final class WorldBuilder {
                 r.setConstraint(i, c);
             }
         }
-        for (int i = 0; i < document.getScripts().size(); i++) {
-            r.unsupported(UnsupportedElement.Kind.SCRIPT, i, "the engine has no scripts yet");
-        }
-        for (int i = 0; i < document.getScriptBindings().size(); i++) {
-            r.unsupported(UnsupportedElement.Kind.SCRIPT_BINDING, i, "the engine has no scripts yet");
-        }
+        ScriptMapping.build(document, world, r);
         for (int i = 0; i < document.getEvents().size(); i++) {
             buildEvent(document.getEvents().get(i), i, r, otherData, shapeData);
         }

@@ -13,6 +13,7 @@ import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Landscape;
+import org.emini.event.Script;
 import org.emini.shape.Circle;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Polygon;
@@ -24,7 +25,8 @@ import org.emini.world.World;
  * Saves a {@link World} as an original world file (version 10), what the original's World Designer
  * writes and {@link WorldBuilder} loads: gravity and damping, shapes (the world's
  * {@linkplain World#getShapeSet() shape set} first, so their ids survive, then the other shapes the
- * bodies use), bodies, joints, springs, motors and the landscape, with the mapping of
+ * bodies use), bodies, joints, springs, motors, the landscape and scripts (with the scripts running,
+ * as rows of the script-body table), with the mapping of
  * {@code phy-mapping.md} run backwards (angular velocities and rotational motor targets negated,
  * a motor's force cap stored as the impulse per tick, values rounded to the nearest fixed-point
  * step, a circle's radius to whole pixels). String user data is stored; other user data is not.
@@ -100,6 +102,7 @@ public final class WorldWriter {
             }
         }
         landscape(world.getLandscape());
+        scripts(world);
         if (world.getEventCount() > 0) {
             notSaved.add(world.getEventCount() + " events (not written yet)");
         }
@@ -288,6 +291,34 @@ public final class WorldWriter {
         }
         userData(p, c.getUserData());
         doc.getConstraints().add(p);
+    }
+
+    /** The world's scripts, and its running scripts as script-body rows (a row starts at the first element). */
+    private void scripts(World world) {
+        Map<Script, Integer> index = new IdentityHashMap<Script, Integer>();
+        for (int i = 0; i < world.getScriptCount() && i < PhyWorld.NONE; i++) {
+            try {
+                doc.getScripts().add(ScriptMapping.stored(world.getScript(i)));
+                index.put(world.getScript(i), doc.getScripts().size() - 1);
+            } catch (IllegalArgumentException e) {
+                notSaved.add("script " + i + ": left out, " + e.getMessage());
+            }
+        }
+        if (world.getScriptCount() > PhyWorld.NONE) {
+            notSaved.add((world.getScriptCount() - PhyWorld.NONE) + " scripts beyond the 255 a row names");
+        }
+        for (int i = 0; i < world.getRunningScriptCount(); i++) {
+            Integer script = index.get(world.getRunningScript(i));
+            Integer body = bodyIndex.get(world.getRunningScriptBody(i));
+            if (script == null || body == null || body >= PhyWorld.NONE) {
+                notSaved.add("running script " + i + ": left out, its script or body is not saved");
+                continue;
+            }
+            doc.getScriptBindings().add(new PhyScriptBinding(script, body));
+        }
+        if (world.getRunningScriptCount() > 0) {
+            notSaved.add(world.getRunningScriptCount() + " running scripts are saved as starting again from their first element");
+        }
     }
 
     private boolean pair(PhyPairConstraint p, Body a, Body b, float ax, float ay, float bx, float by, String what) {

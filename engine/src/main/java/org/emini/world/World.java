@@ -1,5 +1,6 @@
 package org.emini.world;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.IdentityHashMap;
 import org.emini.constraint.Spring;
@@ -11,6 +12,8 @@ import org.emini.dynamics.Landscape;
 import org.emini.dynamics.Simulation;
 import org.emini.event.Event;
 import org.emini.event.PhysicsEventListener;
+import org.emini.event.Script;
+import org.emini.event.ScriptHost;
 import org.emini.internal.ChangeQueue;
 import org.emini.internal.Check;
 import org.emini.internal.ElementList;
@@ -45,7 +48,7 @@ import org.emini.shape.ShapeSet;
  * }
  * }</pre>
  */
-public class World extends Simulation {
+public class World extends Simulation implements ScriptHost {
     private final ElementList<ExternalForce> forces = new ElementList<ExternalForce>(changes(), new ExternalForce[4],
         "ExternalForce", "force");
     private final ElementList<Event> events = new ElementList<Event>(changes(), new Event[4], "Event", "event");
@@ -64,6 +67,9 @@ public class World extends Simulation {
 
     private Object userData;
     private ShapeSet shapeSet = new ShapeSet();
+    private final ArrayList<Script> scripts = new ArrayList<Script>();
+    private ScriptRun[] runs = new ScriptRun[4];
+    private int runCount;
 
     /** Creates an empty world with the original engine's defaults. */
     public World() {
@@ -94,7 +100,8 @@ public class World extends Simulation {
     /**
      * Adds a copy of everything in another world to this one (the original's {@code addWorld}): its
      * bodies ({@link Body#copy()}: shapes and user data shared), then its constraints, external
-     * forces and events, each copied onto the copies of its bodies. The other world's landscape
+     * forces, events, scripts and the scripts running (where they are), each on the copies of its
+     * bodies. The other world's landscape
      * segments are added to this world's landscape (whose material stays this world's). Particle
      * emitters are not copied. The other world is not changed.
      *
@@ -154,6 +161,12 @@ public class World extends Simulation {
         }
         for (int i = 0; i < other.getEventCount(); i++) {
             addEvent(other.getEvent(i).copy(mapping));
+        }
+        for (Script script : other.scripts) {
+            addScript(script);
+        }
+        for (int i = 0; i < other.runCount; i++) {
+            startRun(new ScriptRun(other.runs[i], mapping.body(other.runs[i].body)));
         }
         Landscape from = other.getLandscape();
         Landscape to = getLandscape();
@@ -302,6 +315,7 @@ public class World extends Simulation {
 
     @Override
     protected final void step(float dt) {
+        runScripts(dt);
         for (int i = 0, n = forces.count(); i < n; i++) {
             forces.get(i).applyForce(this, dt);
         }
@@ -319,6 +333,142 @@ public class World extends Simulation {
     @Override
     protected final void bodyRemoved(Body body) {
         particles.removeEmittersOf(body);
+        int kept = 0;
+        for (int i = 0; i < runCount; i++) {
+            if (runs[i].body != body) {
+                runs[kept++] = runs[i];
+            }
+        }
+        Arrays.fill(runs, kept, runCount, null);
+        runCount = kept;
+    }
+
+    // ---------------------------------------------------------------------------------------------
+    // Scripts
+
+    /** Runs one tick of every running script, at the start of the tick; ended runs are dropped. */
+    private void runScripts(float dt) {
+        int kept = 0;
+        for (int i = 0; i < runCount; i++) {
+            ScriptRun run = runs[i];
+            if (run.step(dt)) {
+                runs[kept++] = run;
+            }
+        }
+        Arrays.fill(runs, kept, runCount, null);
+        runCount = kept;
+    }
+
+    /**
+     * Adds a script to the world's list (the original's {@code addScript}), where a world file
+     * keeps its scripts; {@link #applyScript} runs one.
+     *
+     * @param script the script
+     */
+    public void addScript(Script script) {
+        Check.notNull("World.addScript", "script", script);
+        if (!scripts.contains(script)) {
+            scripts.add(script);
+        }
+    }
+
+    /**
+     * Removes a script from the world's list and stops its runs.
+     *
+     * @param script the script
+     * @return true when it was in the list
+     */
+    public boolean removeScript(Script script) {
+        int kept = 0;
+        for (int i = 0; i < runCount; i++) {
+            if (runs[i].script != script) {
+                runs[kept++] = runs[i];
+            }
+        }
+        Arrays.fill(runs, kept, runCount, null);
+        runCount = kept;
+        return scripts.remove(script);
+    }
+
+    /**
+     * The number of scripts in the world's list.
+     *
+     * @return the count
+     */
+    public int getScriptCount() {
+        return scripts.size();
+    }
+
+    /**
+     * A script by its position in the world's list.
+     *
+     * @param index 0 to {@link #getScriptCount()} − 1
+     * @return the script
+     */
+    public Script getScript(int index) {
+        return scripts.get(index);
+    }
+
+    /**
+     * Runs a script on a body (the original's {@code script.applyToBody(body, world)}): from the
+     * next tick on, each tick starts with the script's current element applied to the body. The
+     * script joins the world's list. Unlike the original's fixed 32 runs, any number may run.
+     *
+     * @param script the script
+     * @param body a body of this world
+     */
+    @Override
+    public void applyScript(Script script, Body body) {
+        Check.notNull("World.applyScript", "script", script);
+        Check.notNull("World.applyScript", "body", body);
+        if (!willContain(body)) {
+            throw new IllegalArgumentException("World.applyScript: " + body + " is not in this world");
+        }
+        addScript(script);
+        startRun(new ScriptRun(script, body));
+    }
+
+    private void startRun(ScriptRun run) {
+        if (runCount == runs.length) {
+            runs = Arrays.copyOf(runs, 2 * runCount);
+        }
+        runs[runCount++] = run;
+    }
+
+    /**
+     * The number of script runs in progress.
+     *
+     * @return the count
+     */
+    public int getRunningScriptCount() {
+        return runCount;
+    }
+
+    /**
+     * The script of a run in progress.
+     *
+     * @param index 0 to {@link #getRunningScriptCount()} − 1, in the order the runs started
+     * @return the script
+     */
+    public Script getRunningScript(int index) {
+        return run(index).script;
+    }
+
+    /**
+     * The body a run in progress moves.
+     *
+     * @param index 0 to {@link #getRunningScriptCount()} − 1, in the order the runs started
+     * @return the body
+     */
+    public Body getRunningScriptBody(int index) {
+        return run(index).body;
+    }
+
+    private ScriptRun run(int index) {
+        if (index < 0 || index >= runCount) {
+            throw new IndexOutOfBoundsException("World: script run " + index + " of " + runCount);
+        }
+        return runs[index];
     }
 
     // ---------------------------------------------------------------------------------------------
