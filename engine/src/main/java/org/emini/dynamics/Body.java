@@ -25,6 +25,16 @@ import org.emini.shape.Shape;
  *
  * <p>Which pairs collide: see {@link #setCollisionLayers(int)} (the original engine's layers) and
  * {@link #setCategoryBits(int)} (Box2D's categories, mask and group); both must allow a pair.
+ *
+ * <pre>{@code
+ * Shape crate = Shape.createRectangle(20, 20);   // mass, friction and elasticity live on the shape
+ * Body body = new Body(100, 50, crate, true);    // dynamic, at (100, 50)
+ * body.setAngleDegrees(30);
+ * body.setVelocity(40, -80);                     // px/s, y down the screen
+ * world.addBody(body);
+ * world.tick();
+ * body.applyImpulse(0, -50);                     // a kick upwards: Δv = j / m at once
+ * }</pre>
  */
 public final class Body {
     private Shape shape;

@@ -21,6 +21,18 @@ import org.emini.math.EMath;
  * 0.1 px one does not, and a 0.001 px box ends 50 times its size inside the ground. Boxes up to
  * 1,000 px rest and stack as well as 20 px ones; a polygon's sides may differ by up to the factor
  * 1 / {@link Polygon#RELATIVE_TOLERANCE}.
+ *
+ * <p>A contact's friction and elasticity are the products of the two shapes' factors (as in the
+ * original engine): a bouncy ball needs a bouncy ground too.
+ *
+ * <pre>{@code
+ * Circle ball = Shape.createCircle(10);
+ * ball.setElasticity(0.8f);                  // 0..1; setElasticityPercent(80) as in the original
+ * ball.setMass(2);                           // every body using this shape weighs 2
+ * Polygon ground = Shape.createRectangle(400, 20);
+ * ground.setElasticity(1f);                  // 0.8 × 1: the ball bounces back to 64% of its height
+ * Polygon wedge = Shape.createPolygon(0, 0, 40, 0, 0, -30);   // convex, either winding
+ * }</pre>
  */
 public abstract class Shape {
     /** Type code of {@link Circle}. */

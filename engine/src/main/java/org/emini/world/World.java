@@ -333,14 +333,7 @@ public class World extends Simulation implements ScriptHost {
     @Override
     protected final void bodyRemoved(Body body) {
         particles.removeEmittersOf(body);
-        int kept = 0;
-        for (int i = 0; i < runCount; i++) {
-            if (runs[i].body != body) {
-                runs[kept++] = runs[i];
-            }
-        }
-        Arrays.fill(runs, kept, runCount, null);
-        runCount = kept;
+        stopRuns(body, null);
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -379,15 +372,20 @@ public class World extends Simulation implements ScriptHost {
      * @return true when it was in the list
      */
     public boolean removeScript(Script script) {
+        stopRuns(null, script);
+        return scripts.remove(script);
+    }
+
+    /** Drops the runs on a body or of a script (null matches nothing), keeping the others' order. */
+    private void stopRuns(Body body, Script script) {
         int kept = 0;
         for (int i = 0; i < runCount; i++) {
-            if (runs[i].script != script) {
+            if (runs[i].body != body && runs[i].script != script) {
                 runs[kept++] = runs[i];
             }
         }
         Arrays.fill(runs, kept, runCount, null);
         runCount = kept;
-        return scripts.remove(script);
     }
 
     /**
