@@ -43,6 +43,37 @@ public final class SolverSettings {
     }
 
     /**
+     * Makes these settings a copy of another's, every value as it is there (the length scale is
+     * copied, not applied again).
+     *
+     * @param other the settings to copy
+     */
+    public void set(SolverSettings other) {
+        linearSlop = other.linearSlop;
+        speculativeDistance = other.speculativeDistance;
+        manifoldReuseDistance = other.manifoldReuseDistance;
+        aabbMargin = other.aabbMargin;
+        contactHertz = other.contactHertz;
+        contactDampingRatio = other.contactDampingRatio;
+        contactPushMaxVelocity = other.contactPushMaxVelocity;
+        jointPushMaxVelocity = other.jointPushMaxVelocity;
+        restitutionThreshold = other.restitutionThreshold;
+        convergenceTolerance = other.convergenceTolerance;
+        impactTolerance = other.impactTolerance;
+        impactRelaxPasses = other.impactRelaxPasses;
+        timeOfImpactTarget = other.timeOfImpactTarget;
+        substepHertzRatio = other.substepHertzRatio;
+        blockConditionLimit = other.blockConditionLimit;
+        jointHertz = other.jointHertz;
+        jointDampingRatio = other.jointDampingRatio;
+        maxContacts = other.maxContacts;
+        sleepLinearTolerance = other.sleepLinearTolerance;
+        sleepAngularTolerance = other.sleepAngularTolerance;
+        timeToSleep = other.timeToSleep;
+        lengthScale = other.lengthScale;
+    }
+
+    /**
      * Overlap the solver leaves alone so resting contacts do not jitter. Default 0.05 px (the
      * original engine allowed 1/16 px; Box2D v3 0.005 m).
      *

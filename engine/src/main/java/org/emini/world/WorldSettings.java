@@ -20,29 +20,6 @@ final class WorldSettings {
         }
         to.setSleepingEnabled(from.isSleepingEnabled());
         to.setHitEventThreshold(from.getHitEventThreshold());
-        SolverSettings a = from.getSolverSettings();
-        SolverSettings b = to.getSolverSettings();
-        // The length scale first: it rescales the tolerances, which are then set as they are.
-        b.setLengthScale(a.getLengthScale());
-        b.setLinearSlop(a.getLinearSlop());
-        b.setSpeculativeDistance(a.getSpeculativeDistance());
-        b.setAabbMargin(a.getAabbMargin());
-        b.setContactHertz(a.getContactHertz());
-        b.setContactDampingRatio(a.getContactDampingRatio());
-        b.setContactPushMaxVelocity(a.getContactPushMaxVelocity());
-        b.setJointPushMaxVelocity(a.getJointPushMaxVelocity());
-        b.setRestitutionThreshold(a.getRestitutionThreshold());
-        b.setConvergenceTolerance(a.getConvergenceTolerance());
-        b.setJointHertz(a.getJointHertz());
-        b.setJointDampingRatio(a.getJointDampingRatio());
-        b.setImpactTolerance(a.getImpactTolerance());
-        b.setImpactRelaxPasses(a.getImpactRelaxPasses());
-        b.setTimeOfImpactTarget(a.getTimeOfImpactTarget());
-        b.setSubstepHertzRatio(a.getSubstepHertzRatio());
-        b.setBlockConditionLimit(a.getBlockConditionLimit());
-        b.setMaxContacts(a.getMaxContacts());
-        b.setSleepLinearTolerance(a.getSleepLinearTolerance());
-        b.setSleepAngularTolerance(a.getSleepAngularTolerance());
-        b.setTimeToSleep(a.getTimeToSleep());
+        to.getSolverSettings().set(from.getSolverSettings());
     }
 }
