@@ -167,7 +167,13 @@ class CustomConstraintTest {
         world.addConstraint(rail);
         Motor motor = new Motor(cart, 40f, 0f, 30f);
         world.addConstraint(motor);
-        Rigs.run(world, 100);
+        Rigs.run(world, 80);
+        // The rail's force swings from tick to tick (0.07 to 1.75 in the last ticks): its mean.
+        float railForce = 0f;
+        for (int t = 0; t < 20; t++) {
+            world.tick();
+            railForce += rail.getForce() / 20f;
+        }
         // The box rests against the wall (its face at 95) and the cart against the box, with the
         // motor pressing at its full force and nothing moving.
         assertEquals(85f, box.getX(), 0.2f);
@@ -175,8 +181,7 @@ class CustomConstraintTest {
         assertEquals(0f, cart.getY(), 0.01f);
         assertEquals(0f, cart.getVelocityX(), 0.01f);
         assertEquals(30f, motor.getForce(), 0.01f);
-        // Weightless: the rail only takes what friction passes on sideways, a small part of it. It varies
-        // from tick to tick (measured over ticks 50-100: 0.07 to 1.7 in float, 0.35 to 1.8 in double).
-        assertTrue(rail.getForce() < 0.1f * motor.getForce(), "rail force " + rail.getForce());
+        // Weightless: the rail only takes what friction passes on sideways, a small part of it.
+        assertTrue(railForce < 2f, "mean rail force " + railForce);
     }
 }
