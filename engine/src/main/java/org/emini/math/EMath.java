@@ -4,15 +4,16 @@ package org.emini.math;
  * The one place where the engine takes square roots and trigonometric functions.
  *
  * <p>All other numeric code in the engine is plain {@code float} arithmetic. Keeping these calls
- * here lets the double-precision and fixed-point flavours of the engine be generated from the same
- * source by replacing this class alone. Trigonometry goes through {@link StrictMath} so results are
+ * here lets other flavours of the engine be generated from the same source: the double-precision
+ * flavour (engine-double/README.md) by the generator's type rules alone, a fixed-point one by
+ * replacing this class and the number type. Trigonometry goes through {@link StrictMath} so results are
  * bit-identical on every JVM and Android runtime; {@code sqrt} is exactly rounded by IEEE 754.
  */
 public final class EMath {
-    /** π as a float. */
-    public static final float PI = 3.14159265358979f;
+    /** π as a float (a cast of {@link Math#PI}, so the double flavour gets π to its own precision). */
+    public static final float PI = (float) Math.PI;
     /** 2π as a float. */
-    public static final float TWO_PI = 6.28318530717959f;
+    public static final float TWO_PI = (float) (2 * Math.PI);
 
     private EMath() {
     }

@@ -84,7 +84,7 @@ class BreakableJointTest {
         hold.setOrthogonal(true);
         hold.setBreakForce(1.01f * weight);
         world.addConstraint(hold);
-        Rigs.run(world, Math.round(ticksPerSecond));
+        Rigs.run(world, (int) Math.round(ticksPerSecond));
         assertEquals(1, world.getConstraintCount());
         assertEquals(weight, hold.getForce(), 1e-3 * weight);
         hold.setBreakForce(0.99f * weight);

@@ -43,7 +43,7 @@ class HangingChainTest {
         /** Runs and returns the widest joint gap seen after any tick. */
         double run(float seconds) {
             double worst = 0.0;
-            int ticks = Math.round(seconds / world.getTimestep());
+            int ticks = (int) Math.round(seconds / world.getTimestep());
             for (int t = 0; t < ticks; t++) {
                 world.tick();
                 for (Joint j : joints) {

@@ -64,7 +64,7 @@ class MotorJointTest {
         motor.setCollisionLayer(2);
         motor.setLinearOffset(100f, 0f);
         world.addConstraint(motor);
-        Rigs.run(world, Math.round(4 * ticksPerSecond));
+        Rigs.run(world, (int) Math.round(4 * ticksPerSecond));
         // A's x axis points down the screen at 90°: the target is (0, 100).
         assertEquals(0.0, box.getX(), 0.01);
         assertEquals(100.0, box.getY(), 0.01);

@@ -34,7 +34,7 @@ class MouseJointTest {
         double h = world.getTimestep() / world.getConstraintIterations();
 
         // The first second: capped all along (the spring wants m·ω²·300 px and more).
-        int ticks = Math.round(ticksPerSecond);
+        int ticks = (int) Math.round(ticksPerSecond);
         Rigs.run(world, ticks);
         double t = ticks * world.getTimestep();
         assertEquals(0.5 * ACCELERATION * t * (t + h), box.getX(), 1e-3 * box.getX());

@@ -44,7 +44,7 @@ class PrismaticInclineTest {
     @ValueSource(floats = {20f, 60f})
     void frictionlessSlideAcceleratesAtGSinTheta(float ticksPerSecond) {
         PrismaticJoint joint = slide(ticksPerSecond);
-        int ticks = Math.round(2f * ticksPerSecond);
+        int ticks = (int) Math.round(2f * ticksPerSecond);
         Rigs.run(world, ticks);
         double t = ticks * world.getTimestep();
         double a = world.getGravityY() * Math.sin(SLOPE);
@@ -65,14 +65,14 @@ class PrismaticInclineTest {
         double weight = box.getMass() * world.getGravityY() * Math.sin(SLOPE);
         float cap = (float) (2.0 * weight);
         joint.setMotor(-25f, cap);
-        Rigs.run(world, Math.round(ticksPerSecond));
+        Rigs.run(world, (int) Math.round(ticksPerSecond));
         double speed = box.getVelocityX() * Math.cos(SLOPE) + box.getVelocityY() * Math.sin(SLOPE);
         System.out.printf("prismatic motor %.0f ticks/s: speed %.4f px/s vs −25, motor force %.3f vs m·g·sin θ %.3f (cap %.3f)%n",
             ticksPerSecond, speed, joint.getMotorForce(), weight, cap);
         assertEquals(-25.0, speed, 1e-3);
         assertEquals(-weight, joint.getMotorForce(), 1e-3 * weight);
         float before = joint.getTranslation();
-        Rigs.run(world, Math.round(ticksPerSecond));
+        Rigs.run(world, (int) Math.round(ticksPerSecond));
         assertEquals(-25.0, joint.getTranslation() - before, 0.01);
     }
 
@@ -83,7 +83,7 @@ class PrismaticInclineTest {
         double g = world.getGravityY() * Math.sin(SLOPE);
         float cap = (float) (0.25 * box.getMass() * g);
         joint.setMotor(-25f, cap);
-        int ticks = Math.round(2f * ticksPerSecond);
+        int ticks = (int) Math.round(2f * ticksPerSecond);
         Rigs.run(world, ticks);
         double t = ticks * world.getTimestep();
         double a = g - cap / box.getMass();

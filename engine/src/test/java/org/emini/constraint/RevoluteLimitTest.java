@@ -64,7 +64,7 @@ class RevoluteLimitTest {
         world.addConstraint(hinge);
         // Relative acceleration T·(1/I_A + 1/I_B) until the speed is reached.
         double relative = torque * (1.0 / a.getInertia() + 1.0 / b.getInertia());
-        int ticks = Math.round(ticksPerSecond);
+        int ticks = (int) Math.round(ticksPerSecond);
         Rigs.run(world, ticks);
         double t = ticks * world.getTimestep();
         System.out.printf("revolute motor %.0f ticks/s: relative ω %.5f vs %.5f; momentum %.3g%n", ticksPerSecond,

@@ -57,12 +57,12 @@ class RopeTest {
         double g = world.getGravityY();
         double h = world.getTimestep() / world.getConstraintIterations();
         // Free fall from 60 px covers the 40 px of slack after √(2·40/g) ≈ 0.894 s: check at 0.8 s.
-        int ticks = Math.round(0.8f * ticksPerSecond);
+        int ticks = (int) Math.round(0.8f * ticksPerSecond);
         Rigs.run(world, ticks);
         double t = ticks * world.getTimestep();
         assertEquals(60.0 + 0.5 * g * t * (t + h), ball.getY(), 1e-3);
         assertEquals(0.0, rope.getTension(), 0.0);
-        Rigs.run(world, Math.round(2f * ticksPerSecond));
+        Rigs.run(world, (int) Math.round(2f * ticksPerSecond));
         System.out.printf("rope slack %.0f ticks/s: length after it went taut %.4f px%n", ticksPerSecond,
             rope.getCurrentLength());
         assertTrue(rope.getCurrentLength() <= LENGTH + 0.01, "stretched to " + rope.getCurrentLength());

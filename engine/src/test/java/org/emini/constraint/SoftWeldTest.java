@@ -50,7 +50,7 @@ class SoftWeldTest {
         double sag = world.getGravityY() / Math.pow(2 * Math.PI * 2, 2);
         double period = Oscillation.period(world, () -> disc.getY(), sag, 5);
         weld.setStiffness(2f, 0f, 1f);
-        Rigs.run(world, Math.round(3 * ticksPerSecond));
+        Rigs.run(world, (int) Math.round(3 * ticksPerSecond));
         System.out.printf("soft weld point %.0f ticks/s: period %.5f s vs 0.5 s, sag %.4f px vs g/ω² %.4f px%n",
             ticksPerSecond, period, disc.getY(), sag);
         assertEquals(0.5, period, 0.005);

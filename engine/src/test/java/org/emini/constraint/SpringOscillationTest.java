@@ -66,7 +66,7 @@ class SpringOscillationTest {
         double wd = o.omega * Math.sqrt(1 - o.zeta * o.zeta);
         double dt = world.getTimestep();
         double prevX = STRETCH;
-        int ticks = Math.round(seconds / (float) dt);
+        int ticks = (int) Math.round(seconds / (float) dt);
         for (int i = 1; i <= ticks; i++) {
             world.tick();
             double t = i * dt;

@@ -34,7 +34,7 @@ class WheelSuspensionTest {
         double period = Oscillation.period(world, () -> chassis.getY(), sag, 6);
         // With damping the chassis settles at the sag, where the spring holds m·g.
         joint.setSpring(HERTZ, 1f);
-        Rigs.run(world, Math.round(3 * ticksPerSecond));
+        Rigs.run(world, (int) Math.round(3 * ticksPerSecond));
         double weight = chassis.getMass() * world.getGravityY();
         System.out.printf("wheel %.0f ticks/s: period %.5f s vs %.5f, sag %.4f px vs g/ω² %.4f, spring force %.3f vs m·g %.3f%n",
             ticksPerSecond, period, 1.0 / HERTZ, chassis.getY(), sag, joint.getSpringForce(), weight);
@@ -59,10 +59,10 @@ class WheelSuspensionTest {
         joint.setMotor(6f, torque);
         world.addConstraint(joint);
         // Angular acceleration T/I = 2 rad/s² until 6 rad/s.
-        Rigs.run(world, Math.round(ticksPerSecond));
+        Rigs.run(world, (int) Math.round(ticksPerSecond));
         assertEquals(2.0, wheel.getAngularVelocity(), 1e-3);
         assertEquals(torque, joint.getMotorTorque(), 1e-3 * torque);
-        Rigs.run(world, Math.round(3 * ticksPerSecond));
+        Rigs.run(world, (int) Math.round(3 * ticksPerSecond));
         assertEquals(6.0, wheel.getAngularVelocity(), 1e-3);
         assertEquals(30.0, wheel.getY(), 0.01);
         assertEquals(0.0, wheel.getX(), 0.01);

@@ -84,7 +84,7 @@ class KinematicBodyTest {
         float a = mu * g;
         float matchTime = speed / a;
         float dt = world.getTimestep();
-        int half = Math.round(0.5f * matchTime / dt);
+        int half = (int) Math.round(0.5f * matchTime / dt);
         for (int t = 0; t < half; t++) {
             world.tick();
         }

@@ -218,7 +218,7 @@ class MultiShapePartContactsTest {
     /** Ticks for some seconds, noting the parts of the box whose contacts begin; returns the ends. */
     private static int run(World world, float seconds, Body box, Body ball, List<Integer> began) {
         int ends = 0;
-        for (int t = 0; t < Math.round(seconds / world.getTimestep()); t++) {
+        for (int t = 0; t < (int) Math.round(seconds / world.getTimestep()); t++) {
             world.tick();
             StepData step = world.getStepData();
             for (int i = 0; i < step.getBeginCount(); i++) {

@@ -45,7 +45,7 @@ final class Scenes {
     }
 
     static void run(World world, float seconds) {
-        int ticks = Math.round(seconds / world.getTimestep());
+        int ticks = (int) Math.round(seconds / world.getTimestep());
         for (int i = 0; i < ticks; i++) {
             world.tick();
         }

@@ -17,7 +17,7 @@ class SolverSettingsCopyTest {
         for (Field field : fields()) {
             k++;
             if (field.getType() == float.class) {
-                field.setFloat(from, 1000f + k);
+                field.set(from, 1000f + k); // boxed: the double flavour sets a Double into its double fields
             } else {
                 field.setInt(from, 1000 + k);
             }

@@ -44,7 +44,7 @@ class StackingTest {
         float worstOverlap = 0f;
         float worstDrift = 0f;
         float worstTurn = 0f;
-        int ticks = Math.round(seconds / world.getTimestep());
+        int ticks = (int) Math.round(seconds / world.getTimestep());
         for (int t = 0; t < ticks; t++) {
             world.tick();
             if (t % 10 == 9) {

@@ -29,7 +29,7 @@ final class Bytes {
 
     Bytes px(float... values) {
         for (float v : values) {
-            i32(Math.round(v * 4096));
+            i32((int) Math.round(v * 4096));
         }
         return this;
     }

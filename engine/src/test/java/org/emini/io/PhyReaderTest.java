@@ -266,7 +266,7 @@ class PhyReaderTest {
     void fixedPointConvertsAsTheOriginalReadsIt() {
         assertEquals(1f, PhyFixed.fx(4096));
         assertEquals(-0.5f, PhyFixed.fx(-2048));
-        assertEquals(0.98999023f, PhyFixed.fx(99 * 4096 / 100), "99 % through the percent setter");
+        assertEquals(0.989990234375f, PhyFixed.fx(99 * 4096 / 100), "99 % through the percent setter (4055 / 4096, exact)");
         assertEquals(1f, PhyFixed.fx2(1 << 24));
         assertEquals((float) (52707178 / 16777216.0), PhyFixed.fx2(PhyFixed.PI_2FX), "the original's π, 1.5e-7 short");
         assertEquals(1024, PhyFixed.toFx(0.25f));

@@ -142,7 +142,7 @@ class WorldBuilderTest {
         s.setFrictionRaw(1024);
         s.setMassRaw(8192);
         Shape shape = new WorldBuilder().build(oneBody(s, new PhyBody())).getShape(0);
-        assertEquals(0.98999023f, shape.getElasticity());
+        assertEquals(0.989990234375f, shape.getElasticity());
         assertEquals(0.25f, shape.getFriction());
         assertEquals(2f, shape.getMass());
         PhyShape odd = square(10);

@@ -35,7 +35,7 @@ class ParticleBallisticTest {
         double vy0 = 80.0 * Math.sin(angle);
         double gx = 20.0 * gravityScale * factor;
         double gy = 100.0 * gravityScale * factor;
-        int ticks = Math.round(3f * ticksPerSecond);
+        int ticks = (int) Math.round(3f * ticksPerSecond);
         for (int n = 1; n <= ticks; n++) {
             world.tick();
             double t = n * (double) world.getTimestep();

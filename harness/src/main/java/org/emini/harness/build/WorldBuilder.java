@@ -102,7 +102,7 @@ public final class WorldBuilder {
             case "restitutionThreshold" -> s.setRestitutionThreshold(v);
             case "convergenceTolerance" -> s.setConvergenceTolerance(v);
             case "impactTolerance" -> s.setImpactTolerance(v);
-            case "impactRelaxPasses" -> s.setImpactRelaxPasses(Math.round(v));
+            case "impactRelaxPasses" -> s.setImpactRelaxPasses((int) Math.round(v));
             default -> throw new IllegalArgumentException("unknown solver setting " + key);
         }
     }

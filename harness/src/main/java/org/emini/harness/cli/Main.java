@@ -14,7 +14,7 @@ import picocli.CommandLine.Command;
         description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
         subcommands = {ValidateCommand.class, RunCommand.class, CompareCommand.class, ExpandCommand.class,
                 SweepCommand.class, StabilityCommand.class, DashboardCommand.class, ConvertCommand.class,
-                FuzzCommand.class, CommandLine.HelpCommand.class})
+                FuzzCommand.class, FlavoursCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @Override

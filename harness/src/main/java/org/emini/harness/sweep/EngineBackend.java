@@ -29,7 +29,7 @@ public final class EngineBackend implements SweepBackend {
 
     @Override
     public String name() {
-        return "emini";
+        return org.emini.harness.flavour.EngineFlavour.ENGINE;
     }
 
     @Override

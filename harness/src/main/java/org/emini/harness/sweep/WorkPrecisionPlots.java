@@ -121,15 +121,17 @@ public final class WorkPrecisionPlots {
             double[] xs = ps.stream().mapToDouble(cost).toArray();
             double[] ys = ps.stream().mapToDouble(y).toArray();
             var s = chart.addSeries(line.getKey(), xs, ys);
-            boolean oracle = !ps.get(0).engine().equals("emini");
-            s.setMarker(oracle ? SeriesMarkers.DIAMOND : SeriesMarkers.CIRCLE);
+            boolean oracle = !ps.get(0).engine().startsWith("emini");
+            // The double flavour's points (engine emini-double) as squares beside the float engine's circles.
+            s.setMarker(oracle ? SeriesMarkers.DIAMOND : ps.get(0).engine().equals("emini") ? SeriesMarkers.CIRCLE
+                    : SeriesMarkers.SQUARE);
             java.awt.Color c = COLOURS[iterations.indexOf(ps.get(0).iterations()) % COLOURS.length];
             s.setLineColor(c);
             s.setMarkerColor(c);
             if (oracle) {
                 // The oracle's lines dashed: the same colour is the same iteration count.
-                s.setLineStyle(new java.awt.BasicStroke(1.6f, java.awt.BasicStroke.CAP_BUTT, java.awt.BasicStroke.JOIN_MITER,
-                        10f, new float[] {6f, 4f}, 0f));
+                s.setLineStyle(new java.awt.BasicStroke(1.6f, java.awt.BasicStroke.CAP_BUTT, // flavour: float (AWT's)
+                        java.awt.BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f)); // flavour: float (AWT's)
             }
         }
         VectorGraphicsEncoder.saveVectorGraphic(chart, stem.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
