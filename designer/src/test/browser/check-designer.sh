@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# The World Designer's check (./emini test runs it): writes the JVM's half of the parity test
+# (ParityCheck: library scenes played on the JVM, every tick's state hashed over the floats' bits),
+# opens the built page (designer/target/page/index.html#selftest) from the file system in headless
+# Chromium, whose self-test plays the same scenes in the engine compiled to WebAssembly and compares
+# tick by tick, times the first scene, and builds, saves (.phy) and reopens a world through the page's
+# controls; then reads the page's saved .phy on the JVM (harness convert) and takes a screenshot.
+# Fails unless the page reports ok. Uses Chromium as the dashboard's check does (installed when missing).
+#   designer/src/test/browser/check-designer.sh [SCREENSHOT_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/../../../.."
+page=designer/target/page
+check=designer/target/check
+shots=${1:-$check}
+[ -f "$page/index.html" ] && [ -f "$page/engine-wasm.js" ] || { echo "check-designer: no built page in $page (mvn install first)" >&2; exit 1; }
+cp="designer/target/classes:harness/target/classes:engine/target/classes:harness/target/lib/*"
+# Scenes: the ten pyramids (timed) and scenes with joints, springs, motors, a landscape, particles,
+# events, multi-shapes and fast rotation.
+java -cp "$cp" org.emini.designer.ParityCheck "$check" "${EMINI_DESIGNER_TICKS:-120}" 300 \
+  scenarios/bench/pyramids-10x20.yaml scenarios/examples/every-element.yaml scenarios/joints/ragdoll-stairs-60hz.yaml \
+  scenarios/closed-form/damped-spring.yaml scenarios/elements/particle-fountain.yaml \
+  scenarios/fast-bodies/fast-spinning-rod.yaml scenarios/elements/sensor-gate.yaml
+CHROMIUM=${CHROMIUM:-/usr/bin/chromium}
+if [ ! -x "$CHROMIUM" ]; then
+  echo "check-designer: installing Debian's chromium (once)" >&2
+  if [ "$(id -u)" = 0 ]; then SUDO=(); else SUDO=(sudo); fi
+  "${SUDO[@]}" apt-get install -y chromium >/dev/null 2>&1 || { "${SUDO[@]}" apt-get update >/dev/null && "${SUDO[@]}" apt-get install -y chromium >/dev/null; }
+fi
+url="file://$(pwd)/$page/index.html"
+# Real time (not --virtual-time-budget), so the page's timing measures: Chromium driven over a pipe.
+result=$(timeout 300 python3 designer/src/test/browser/run-page.py "$CHROMIUM" "$url#selftest" 240 "$shots/designer-selftest.png") || true
+if [ -z "$result" ]; then
+  echo "check-designer: the page's self-test did not report (script error, or no WebAssembly GC in this Chromium)" >&2
+  exit 1
+fi
+printf '%s\n' "$result" > "$check/selftest-result.json"
+# The summary without the saved file's bytes.
+printf '%s' "$result" | sed 's/,"savedPhy":"[^"]*"//' | cut -c1-4000
+echo
+size=$(cat "$page"/index.html "$page"/designer.css "$page"/designer.js "$page"/selftest.js "$page"/classes.wasm-runtime.js "$page"/engine-wasm.js | wc -c)
+echo "check-designer: page size $size bytes (engine.wasm $(wc -c < "$page/engine.wasm") bytes, embedded as base64)"
+# The page's saved world file, read on the JVM by the engine's PhyReader (harness convert).
+saved=$(printf '%s' "$result" | sed -n 's/.*"savedPhy":"\([^"]*\)".*/\1/p')
+if [ -n "$saved" ]; then
+  printf '%s' "$saved" | base64 -d > "$check/page-saved.phy"
+  java -cp "$cp" org.emini.harness.cli.Main convert -o "$check/page-saved.yaml" "$check/page-saved.phy" >/dev/null \
+    || { echo "check-designer: FAILED: the JVM does not read the page's saved .phy" >&2; exit 1; }
+  echo "check-designer: the page's saved .phy ($(wc -c < "$check/page-saved.phy") bytes) reads on the JVM: $check/page-saved.yaml"
+fi
+case "$result" in
+  *'"ok":true'*) echo "check-designer: ok" ;;
+  *) echo "check-designer: FAILED" >&2; exit 1 ;;
+esac
