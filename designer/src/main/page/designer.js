@@ -825,6 +825,14 @@ function fit() {
     minX = Math.min(minX, frame[7 * k]); maxX = Math.max(maxX, frame[7 * k]);
     minY = Math.min(minY, frame[7 * k + 1]); maxY = Math.max(maxY, frame[7 * k + 1]);
   }
+  if (ui.replay) {   // the whole path of a replay
+    for (const b of Object.values(ui.replay.trace.bodies)) {
+      b.x.forEach((x, i) => {
+        if (x === null || b.y[i] === null) return;
+        minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, b.y[i]); maxY = Math.max(maxY, b.y[i]);
+      });
+    }
+  }
   for (const g of (doc.landscape ? doc.landscape.segments : [])) {
     for (const [x, y] of [[g[0], g[1]], [g[2], g[3]]]) {
       minX = Math.min(minX, x / FX); maxX = Math.max(maxX, x / FX); minY = Math.min(minY, y / FX); maxY = Math.max(maxY, y / FX);
@@ -1005,7 +1013,37 @@ async function start() {
   // A replay the dashboard links to: #replay=<dashboard replay script>&scene=<id> (see designer/README.md).
   const hash = new URLSearchParams(location.hash.slice(1));
   if (hash.has("replay")) openDashboardReplay(hash.get("replay"), hash.get("scene"));
+  if (hash.has("open")) openExported(hash.get("open"));
   if (location.hash === "#selftest" && window.runSelfTest) window.runSelfTest();
+}
+
+// A scene file read by the harness (./emini designer SCENE writes it as a script: SceneExport).
+function openExported(src) {
+  const s = document.createElement("script");
+  s.src = src;
+  s.onload = () => {
+    const x = window.EMINI_OPEN;
+    if (!x) { status("Nothing to open in " + src); return; }
+    openDocumentJson(JSON.stringify(x));
+    const report = $("report");
+    for (const n of x.notConverted || []) li(report, "not in a world file: " + n);
+    fit();
+    if (new URLSearchParams(location.hash.slice(1)).has("report")) {
+      const before = E.frame().slice();
+      E.tick(30);
+      const after = E.frame();
+      let moved = 0;
+      for (let k = 0; k < after.length; k += 7) if (after[k] !== before[k] || after[k + 1] !== before[k + 1]) moved++;
+      draw();
+      const pre = $("selftest-result");
+      pre.textContent = JSON.stringify({ ok: doc.bodies.length > 0 && ui.geometry.bodies.length >= doc.bodies.length && moved > 0,
+        scene: x.scene, documentBodies: doc.bodies.length, worldBodies: ui.geometry.bodies.length, movedIn30Ticks: moved,
+        ticksPerSecond: +$("tps").value, notBuilt: ui.geometry.unsupported.length, status: $("status").textContent });
+      pre.hidden = false;
+    }
+  };
+  s.onerror = () => status("Cannot read " + src);
+  document.head.appendChild(s);
 }
 
 // The dashboard's replay data (reports/dashboard/replay/rN.js, window.EMINI_REPLAY[scene] with the
@@ -1025,9 +1063,30 @@ function openDashboardReplay(src, scene) {
     for (const [name, b] of Object.entries(r.engine.bodies)) bodies[name] = { x: b.x, y: b.y, angle: b.a };
     openTrace({ format: "emini-trace", scene, source: r.engine.source, tick: r.engine.time.map((t, i) => i), bodies });
     fit();
+    if (new URLSearchParams(location.hash.slice(1)).has("report")) reportReplay();
   };
   s.onerror = () => status("Cannot read " + src);
   document.head.appendChild(s);
+}
+
+// With &report in the address (check-designer.sh): plays the replay to its end and reports what it drew.
+function reportReplay() {
+  const r = ui.replay, names = Object.keys(r.trace.bodies);
+  const drawn = names.filter(n => n in r.byName).length;
+  const first = replayPoses(), x0 = first.map(p => p && p.x);
+  r.frame = r.trace.tick.length - 1;
+  draw();
+  const last = replayPoses();
+  const moved = last.filter((p, i) => p && x0[i] !== undefined && (p.x !== x0[i])).length;
+  const inView = last.filter(p => {
+    const q = p && toScreen(p.x, p.y);
+    return q && q[0] >= 0 && q[0] <= canvas.width && q[1] >= 0 && q[1] <= canvas.height;
+  }).length;
+  const pre = $("selftest-result");
+  pre.textContent = JSON.stringify({ ok: drawn === names.length && names.length > 0 && r.trace.tick.length > 1 && inView === drawn,
+    scene: r.trace.scene, traceBodies: names.length, drawn, inView, frames: r.trace.tick.length, movedBodies: moved,
+    documentBodies: doc.bodies.length, status: $("status").textContent });
+  pre.hidden = false;
 }
 
 function replayDocument(r) {

@@ -47,6 +47,21 @@ if [ -n "$saved" ]; then
     || { echo "check-designer: FAILED: the JVM does not read the page's saved .phy" >&2; exit 1; }
   echo "check-designer: the page's saved .phy ($(wc -c < "$check/page-saved.phy") bytes) reads on the JVM: $check/page-saved.yaml"
 fi
+# A scene file opened as ./emini designer SCENE opens it (the harness's loader, then the page).
+java -cp "$cp" org.emini.designer.SceneExport scenarios/joints/ragdoll-stairs-60hz.yaml "$page/open-check.js" >/dev/null
+opened=$(timeout 120 python3 designer/src/test/browser/run-page.py "$CHROMIUM" "$url#open=open-check.js&report" 60 "$shots/designer-scene.png") || true
+echo "check-designer: scene opened: $opened"
+case "$opened" in *'"ok":true'*) ;; *) echo "check-designer: FAILED: the page did not open the exported scene" >&2; exit 1 ;; esac
+# The dashboard's replay linked into the page (when ./emini test has written the smoke dashboard).
+replay=$(ls harness/target/dashboard-smoke/dashboard/replay/r*.js 2>/dev/null | head -n 1 || true)
+if [ -n "$replay" ]; then
+  scene=$(sed -n 's/.*window.EMINI_REPLAY\["\([^"]*\)"\].*/\1/p' "$replay" | head -n 1)
+  replayed=$(timeout 120 python3 designer/src/test/browser/run-page.py "$CHROMIUM" \
+    "$url#replay=$(python3 -c 'import sys, urllib.parse; print(urllib.parse.quote(sys.argv[1], safe=""))' "file://$(pwd)/$replay")&scene=$scene&report" \
+    60 "$shots/designer-replay.png") || true
+  echo "check-designer: dashboard replay: $replayed"
+  case "$replayed" in *'"ok":true'*) ;; *) echo "check-designer: FAILED: the page did not replay $replay" >&2; exit 1 ;; esac
+fi
 case "$result" in
   *'"ok":true'*) echo "check-designer: ok" ;;
   *) echo "check-designer: FAILED" >&2; exit 1 ;;
