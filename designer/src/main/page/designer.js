@@ -351,7 +351,8 @@ function showMetrics() {
   const rows = [["tick", m[7].toFixed(0)], ["energy: kinetic", m[0].toPrecision(6)], ["potential", m[1].toPrecision(6)],
     ["total", m[2].toPrecision(6)], ["momentum x", m[3].toPrecision(6)], ["momentum y", m[4].toPrecision(6)],
     ["angular momentum", m[5].toPrecision(6)], ["penetration max (px)", m[6].toPrecision(4)],
-    ["contact points", (E.contacts().length / 5).toFixed(0)]];
+    ["contact points", (E.contacts().length / 5).toFixed(0)],
+    ["events fired", m[8].toFixed(0) + (m[9] >= 0 ? ` (last: event ${m[9]})` : "")]];
   if (ui.tickMs.length) {
     const sorted = ui.tickMs.slice().sort((a, b) => a - b);
     rows.push(["ms per tick (median)", sorted[sorted.length >> 1].toFixed(3)]);

@@ -188,7 +188,7 @@ async function uiTest(result) {
   tool("motor"); clickAt(250, -100);
   tool("segment"); mouse("mousedown", -300, 150); mouse("mousemove", 300, 120); mouse("mouseup", 300, 120);
   tool("emitter"); clickAt(-100, -250);
-  tool("event"); clickAt(150, -100);
+  tool("event"); clickAt(-200, -20);
   u.constraints = doc.constraints.map(c => c.kind).join(",");
   if (u.constraints !== "joint,spring,motor") fail(p, "constraints built: " + u.constraints);
   u.segments = doc.landscape ? doc.landscape.segments.length : 0;
@@ -244,10 +244,12 @@ async function uiTest(result) {
   const after = E.frame().slice(7 * k, 7 * k + 2);
   u.dragMoved = [+(after[0] - before[0]).toFixed(1), +(after[1] - before[1]).toFixed(1)];
   if (!(u.dragMoved[0] > 50 && u.dragMoved[1] < -50)) fail(p, "the dragged circle moved by " + u.dragMoved);
-  const m = E.metrics();
-  u.metrics = { kinetic: m[0], total: m[2], tick: m[7] };
-  E.tick(30);
+  E.tick(60);
   draw();
+  // The collision event on the box fires when it lands (on the static block or the ground).
+  const m = E.metrics();
+  u.metrics = { kinetic: m[0], total: m[2], tick: m[7], eventsFired: m[8], lastEvent: m[9] };
+  if (!(m[8] > 0 && m[9] === 0)) fail(p, "the box's collision event did not fire: " + m[8] + " events");
 }
 
 // Plays the built world n ticks and hashes the end state.

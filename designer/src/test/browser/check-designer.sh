@@ -38,7 +38,7 @@ printf '%s\n' "$result" > "$check/selftest-result.json"
 printf '%s' "$result" | sed 's/,"savedPhy":"[^"]*"//' | cut -c1-4000
 echo
 size=$(cat "$page"/index.html "$page"/designer.css "$page"/designer.js "$page"/selftest.js "$page"/classes.wasm-runtime.js "$page"/engine-wasm.js | wc -c)
-echo "check-designer: page size $size bytes (engine.wasm $(wc -c < "$page/engine.wasm") bytes, embedded as base64)"
+echo "check-designer: page size $size bytes (the engine's module, designer/target/teavm/engine.wasm: $(wc -c < designer/target/teavm/engine.wasm) bytes, embedded as base64)"
 # The page's saved world file, read on the JVM by the engine's PhyReader (harness convert).
 saved=$(printf '%s' "$result" | sed -n 's/.*"savedPhy":"\([^"]*\)".*/\1/p')
 if [ -n "$saved" ]; then

@@ -164,7 +164,7 @@ public final class Bridge {
     /** @return the live metrics (see Play#metrics) */
     @JSExport
     public static double[] metrics() {
-        return play == null ? new double[8] : play.metrics();
+        return play == null ? new double[] {0, 0, 0, 0, 0, 0, 0, 0, 0, -1} : play.metrics();
     }
 
     /**

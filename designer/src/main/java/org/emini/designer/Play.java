@@ -34,6 +34,8 @@ final class Play {
     private final Map<Body, Integer> docIndex = new IdentityHashMap<>();
     private MouseJoint drag;
     private float[] frame = new float[0];
+    private int eventsFired;
+    private int lastEvent = -1;
 
     /**
      * Builds a document.
@@ -48,6 +50,15 @@ final class Play {
         world = result.getWorld();
         world.setTicksPerSecond(ticksPerSecond);
         world.setConstraintIterations(iterations);
+        // The document's events are counted as they fire (the page shows them beside the metrics).
+        world.setPhysicsEventListener((event, parameter) -> {
+            eventsFired++;
+            for (int e = 0; e < doc.getEvents().size(); e++) {
+                if (result.getEvent(e) == event) {
+                    lastEvent = e;
+                }
+            }
+        });
         for (int i = 0; i < doc.getBodies().size(); i++) {
             Body b = result.getBody(i);
             if (b != null) {
@@ -202,7 +213,8 @@ final class Play {
      * The harness's live metrics with its definitions (harness/metrics): kinetic, potential and total
      * energy (springs with a stiffness included), linear momentum x and y, angular momentum about the
      * origin, the deepest touching contact point (the contacts' own depth from the tick's narrow phase,
-     * where the harness re-runs it on the final poses) and the tick count.
+     * where the harness re-runs it on the final poses), the tick count, how many events fired so far and
+     * the document index of the last one (−1 when none).
      */
     double[] metrics() {
         double gx = world.getGravityX();
@@ -246,7 +258,8 @@ final class Play {
                 depth = Math.max(depth, c.getDepth(p));
             }
         }
-        return new double[] {kinetic, potential, kinetic + potential + springs, px, py, l, depth, world.getTickCount()};
+        return new double[] {kinetic, potential, kinetic + potential + springs, px, py, l, depth, world.getTickCount(),
+            eventsFired, lastEvent};
     }
 
     /**
