@@ -125,24 +125,24 @@ function edit(change) {
   return true;
 }
 
-function undo() {
-  if (!ui.undo.length) return;
-  ui.redo.push(JSON.stringify(doc));
-  doc = JSON.parse(ui.undo.pop());
+// Undo takes from the undo stack and puts the current document on the redo stack; redo the reverse.
+function travel(from, to) {
+  if (!from.length) return;
+  to.push(JSON.stringify(doc));
+  doc = JSON.parse(from.pop());
   stop();
+  readWorldFields();
   rebuild();
   clampSelection();
   showProps();
 }
 
+function undo() {
+  travel(ui.undo, ui.redo);
+}
+
 function redo() {
-  if (!ui.redo.length) return;
-  ui.undo.push(JSON.stringify(doc));
-  doc = JSON.parse(ui.redo.pop());
-  stop();
-  rebuild();
-  clampSelection();
-  showProps();
+  travel(ui.redo, ui.undo);
 }
 
 function clampSelection() {
@@ -240,6 +240,18 @@ function draw() {
     }
   });
   if ($("show-joints").checked) drawConstraints(frame);
+  // Emitters: their emit segment (in the world, or in their body's frame when they ride one).
+  doc.emitters.forEach((em, i) => {
+    const k = em.body === NONE ? undefined : ui.docToWorld[em.body];
+    const at = v => k === undefined ? [v[0] / FX, v[1] / FX] : localToWorld(pose(frame, k), v[0] / FX, v[1] / FX);
+    const a = toScreen(...at(em.position1)), b = toScreen(...at(em.position2));
+    ctx.strokeStyle = isSel("emitter", i) ? "#e07000" : "#d40";
+    ctx.lineWidth = 2;
+    line(a, b);
+    ctx.beginPath();
+    ctx.arc(a[0], a[1], 5, 0, 2 * Math.PI);
+    ctx.stroke();
+  });
   const parts = E.particles();
   ctx.fillStyle = "#d40";
   for (let i = 0; i < parts.length; i += 2) {
