@@ -670,8 +670,12 @@ function fieldsOf(sel) {
         ["max force (per tick)", num(c => c.maxForce / FX, (c, v) => { c.maxForce = Math.round(v * FX); })],
         ["flags", num(c => c.flags, (c, v) => { c.flags = v | 0; })]];
     }
+    const anchor = k => ({ get: c => `${c[k][0] / FX} ${c[k][1] / FX}`, text: true,
+      set: (c, v) => { const xy = v.trim().split(/[\s,]+/).map(Number); if (xy.length === 2 && xy.every(isFinite)) c[k] = xy.map(n => Math.round(n * FX)); } });
     const f = [["body 1 (255: world)", num(c => c.body1, (c, v) => { c.body1 = v | 0; })],
-      ["body 2 (255: world)", num(c => c.body2, (c, v) => { c.body2 = v | 0; })]];
+      ["anchor 1 (x y in body 1)", anchor("anchor1")],
+      ["body 2 (255: world)", num(c => c.body2, (c, v) => { c.body2 = v | 0; })],
+      ["anchor 2 (x y in body 2)", anchor("anchor2")]];
     if (c.kind === "spring") {
       f.push(["rest length (px)", num(c => c.restLength / FX, (c, v) => { c.restLength = Math.round(v * FX); })],
              ["coefficient (0: rigid)", num(c => c.coefficient / FX, (c, v) => { c.coefficient = Math.round(v * FX); })]);

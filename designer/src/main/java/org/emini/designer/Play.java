@@ -232,14 +232,16 @@ final class Play {
             double m = b.getMass();
             double vx = b.getVelocityX();
             double vy = b.getVelocityY();
-            double w = b.getAngularVelocity();
-            kinetic += 0.5 * m * (vx * vx + vy * vy) + 0.5 * b.getInertia() * w * w;
+            // A body that cannot rotate has an infinite inertia and no spin (as harness DynamicBodies).
+            double w = b.canRotate() ? b.getAngularVelocity() : 0;
+            double spin = w == 0 ? 0 : b.getInertia() * w;
+            kinetic += 0.5 * m * (vx * vx + vy * vy) + 0.5 * spin * w;
             if (b.isAffectedByGravity()) {
                 potential -= m * (gx * b.getX() + gy * b.getY());
             }
             px += m * vx;
             py += m * vy;
-            l += m * (b.getX() * vy - b.getY() * vx) + b.getInertia() * w;
+            l += m * (b.getX() * vy - b.getY() * vx) + spin;
         }
         double springs = 0;
         for (int i = 0; i < world.getConstraintCount(); i++) {

@@ -94,5 +94,9 @@ class DocJsonTest {
         viaDocument.tick(90);
         assertArrayEquals(direct.frame(), viaDocument.frame());
         assertFalse(direct.geometry().isEmpty());
+        // Its non-rotating bodies (infinite inertia) do not make the metrics NaN.
+        for (double m : direct.metrics()) {
+            assertTrue(Double.isFinite(m), java.util.Arrays.toString(direct.metrics()));
+        }
     }
 }
