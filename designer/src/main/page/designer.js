@@ -922,6 +922,7 @@ function openDocumentJson(text) {
 $("open").addEventListener("change", async () => {
   const f = $("open").files[0];
   if (!f) return;
+  ui.fileName = f.name;
   if (/\.(phy|world)$/i.test(f.name)) {
     openPhy(new Int8Array(await f.arrayBuffer()));
   } else {
@@ -931,7 +932,18 @@ $("open").addEventListener("change", async () => {
   fit();
 });
 
-$("save-phy").addEventListener("click", () => { const b = phyBytes(); if (b) download("world.phy", b, "application/octet-stream"); });
+// The name the document saves under: the opened file's, else world.phy.
+function stem() {
+  return (ui.fileName || "world.phy").replace(/\.[^.]*$/, "");
+}
+
+$("save-phy").addEventListener("click", () => { const b = phyBytes(); if (b) download(stem() + ".phy", b, "application/octet-stream"); });
+$("save-yaml").addEventListener("click", () => {
+  if (!phyBytes()) return;
+  const yaml = E.sceneYaml(stem() + ".phy");
+  if (!yaml) { status("Cannot convert to a scene: " + E.lastError()); return; }
+  download(stem() + ".yaml", yaml, "text/yaml");
+});
 $("save-json").addEventListener("click", () => download("world.json",
   JSON.stringify({ format: "emini-designer", ticksPerSecond: settings().tps, iterations: settings().iterations, document: doc }, null, 1),
   "application/json"));

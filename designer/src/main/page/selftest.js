@@ -211,7 +211,12 @@ async function uiTest(result) {
   click("undo");
   if (doc.bodies[start + 1].position[0] !== moved[0]) fail(p, "undo did not put the dragged box back");
   click("redo");
-  // Save with the page's button (the engine's PhyWriter), open the file again (its PhyReader).
+  // Save with the page's buttons: the scene (the harness's converter, compiled with the engine) and
+  // the world file (the engine's PhyWriter); open the file again (its PhyReader).
+  ui.fileName = "page-saved.phy";
+  click("save-yaml");
+  result.sceneYaml = ui.lastDownload && ui.lastDownload.name === "page-saved.yaml" ? ui.lastDownload.data : "";
+  if (!result.sceneYaml) fail(p, "Save scene .yaml wrote nothing: " + $("status").textContent);
   const written = E.load(JSON.stringify(doc), 60, 8) || E.document();
   click("save-phy");
   const saved = ui.lastDownload && ui.lastDownload.data;

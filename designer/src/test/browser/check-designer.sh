@@ -35,7 +35,7 @@ if [ -z "$result" ]; then
 fi
 printf '%s\n' "$result" > "$check/selftest-result.json"
 # The summary without the saved file's bytes.
-printf '%s' "$result" | sed 's/,"savedPhy":"[^"]*"//' | cut -c1-4000
+printf '%s' "$result" | python3 -c 'import json, sys; r = json.load(sys.stdin); r.pop("savedPhy", None); r.pop("sceneYaml", None); print(json.dumps(r))' | cut -c1-4000
 echo
 size=$(cat "$page"/index.html "$page"/designer.css "$page"/designer.js "$page"/selftest.js "$page"/classes.wasm-runtime.js "$page"/engine-wasm.js | wc -c)
 echo "check-designer: page size $size bytes (the engine's module, designer/target/teavm/engine.wasm: $(wc -c < designer/target/teavm/engine.wasm) bytes, embedded as base64)"
@@ -46,6 +46,13 @@ if [ -n "$saved" ]; then
   java -cp "$cp" org.emini.harness.cli.Main convert -o "$check/page-saved.yaml" "$check/page-saved.phy" >/dev/null \
     || { echo "check-designer: FAILED: the JVM does not read the page's saved .phy" >&2; exit 1; }
   echo "check-designer: the page's saved .phy ($(wc -c < "$check/page-saved.phy") bytes) reads on the JVM: $check/page-saved.yaml"
+  # The page's own scene file (the harness's converter compiled into the page) is what the JVM writes.
+  printf '%s' "$result" | python3 -c 'import json, sys; sys.stdout.write(json.load(sys.stdin)["sceneYaml"])' > "$check/page-scene.yaml"
+  if ! cmp -s "$check/page-scene.yaml" "$check/page-saved.yaml"; then
+    diff "$check/page-scene.yaml" "$check/page-saved.yaml" | head -n 20 >&2
+    echo "check-designer: FAILED: the page's scene file differs from harness convert's" >&2; exit 1
+  fi
+  echo "check-designer: the page's Save scene .yaml equals harness convert's ($(wc -l < "$check/page-scene.yaml") lines)"
 fi
 # A scene file opened as ./emini designer SCENE opens it (the harness's loader, then the page).
 java -cp "$cp" org.emini.designer.SceneExport scenarios/joints/ragdoll-stairs-60hz.yaml "$page/open-check.js" >/dev/null

@@ -3,6 +3,7 @@ package org.emini.designer;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 
+import org.emini.harness.convert.WorldToScenario;
 import org.emini.io.PhyReader;
 import org.emini.io.PhyWorld;
 import org.emini.io.PhyWriter;
@@ -91,6 +92,24 @@ public final class Bridge {
     @JSExport
     public static String lastError() {
         return lastError;
+    }
+
+    /**
+     * The current document as a scene file, by the harness's own converter (what
+     * {@code harness convert world.phy} writes, 30 s long).
+     *
+     * @param source the world file's name, for the scene's header
+     * @return the scene's YAML, or "" if the converter refused (see {@link #lastError()})
+     */
+    @JSExport
+    public static String sceneYaml(String source) {
+        try {
+            lastError = "";
+            return WorldToScenario.convert(doc, source, 30).yaml();
+        } catch (RuntimeException e) {
+            lastError = message(e);
+            return "";
+        }
     }
 
     /** @return the current document as JSON */
