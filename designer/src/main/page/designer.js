@@ -940,8 +940,10 @@ function stem() {
 $("save-phy").addEventListener("click", () => { const b = phyBytes(); if (b) download(stem() + ".phy", b, "application/octet-stream"); });
 $("save-yaml").addEventListener("click", () => {
   if (!phyBytes()) return;
-  const yaml = E.sceneYaml(stem() + ".phy");
+  let yaml = E.sceneYaml(stem() + ".phy");
   if (!yaml) { status("Cannot convert to a scene: " + E.lastError()); return; }
+  // A world file holds no tick rate or iterations: the scene gets the page's.
+  yaml = yaml.replace(/^world:\n/m, `world:\n  ticksPerSecond: ${settings().tps}\n  iterations: ${settings().iterations}\n`);
   download(stem() + ".yaml", yaml, "text/yaml");
 });
 $("save-json").addEventListener("click", () => download("world.json",

@@ -46,13 +46,17 @@ if [ -n "$saved" ]; then
   java -cp "$cp" org.emini.harness.cli.Main convert -o "$check/page-saved.yaml" "$check/page-saved.phy" >/dev/null \
     || { echo "check-designer: FAILED: the JVM does not read the page's saved .phy" >&2; exit 1; }
   echo "check-designer: the page's saved .phy ($(wc -c < "$check/page-saved.phy") bytes) reads on the JVM: $check/page-saved.yaml"
-  # The page's own scene file (the harness's converter compiled into the page) is what the JVM writes.
+  # The page's own scene file (the harness's converter compiled into the page) is what harness convert
+  # writes on the JVM (but for the tick rate and iterations the page adds), and a valid scene.
   printf '%s' "$result" | python3 -c 'import json, sys; sys.stdout.write(json.load(sys.stdin)["sceneYaml"])' > "$check/page-scene.yaml"
-  if ! cmp -s "$check/page-scene.yaml" "$check/page-saved.yaml"; then
+  if ! grep -q '^  ticksPerSecond: 60$' "$check/page-scene.yaml" \
+     || ! grep -v '^  ticksPerSecond: 60$\|^  iterations: 8$' "$check/page-scene.yaml" | cmp -s - "$check/page-saved.yaml"; then
     diff "$check/page-scene.yaml" "$check/page-saved.yaml" | head -n 20 >&2
     echo "check-designer: FAILED: the page's scene file differs from harness convert's" >&2; exit 1
   fi
-  echo "check-designer: the page's Save scene .yaml equals harness convert's ($(wc -l < "$check/page-scene.yaml") lines)"
+  java -cp "$cp" org.emini.harness.cli.Main validate "$check/page-scene.yaml" >/dev/null \
+    || { echo "check-designer: FAILED: the page's scene file is not a valid scene" >&2; exit 1; }
+  echo "check-designer: the page's Save scene .yaml is harness convert's with the page's tick rate, and valid ($(wc -l < "$check/page-scene.yaml") lines)"
 fi
 # A scene file opened as ./emini designer SCENE opens it (the harness's loader, then the page).
 java -cp "$cp" org.emini.designer.SceneExport scenarios/joints/ragdoll-stairs-60hz.yaml "$page/open-check.js" >/dev/null
