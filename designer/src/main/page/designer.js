@@ -628,6 +628,11 @@ function addEvent(bodyIndex) {
 
 // ---------- the properties panel ----------
 
+// The event types of a world file (org.emini.io.PhyEvent); targets A to D are raw values.
+const EVENT_TYPES = [[0, "0 body position (A..D: min x, min y, max x, max y)"], [1, "1 body velocity (A, B: speed² range)"],
+  [2, "2 body rotation (A, B: angle range)"], [3, "3 angular velocity (A, B)"], [4, "4 collision (A..D > 0: above, right, below, left)"],
+  [5, "5 sensor"], [6, "6 relative collision (A direction, B min cosine)"], [10, "10 constraint force (A, B: range)"]];
+
 // Each field: [label, read from the record, write to it (in the user's units), kind].
 function fieldsOf(sel) {
   const num = (get, set) => ({ get, set });
@@ -698,7 +703,7 @@ function fieldsOf(sel) {
       ["elasticity", fx("elasticity")], ["gravity factor", fx("gravityFactor")], ["damping", fx("damping")]];
   }
   if (sel.kind === "event") {
-    return [["type (0 position … 6, 10)", num(e => e.type, (e, v) => { e.type = v | 0; })],
+    return [["type", { get: e => e.type, set: (e, v) => { e.type = v | 0; }, options: EVENT_TYPES }],
       ["body filter (255: any)", num(e => e.bodyFilter, (e, v) => { e.bodyFilter = v | 0; })],
       ["targets A B C D (raw)", { get: e => e.targets.join(" "), set: (e, v) => { e.targets = v.trim().split(/\s+/).map(x => x | 0); }, text: true }],
       ["once", { get: e => e.triggerOnce > 0, set: (e, v) => { e.triggerOnce = v ? 1 : 0; }, check: true }]];
@@ -746,9 +751,17 @@ function showProps() {
   for (const [label, f] of fieldsOf(sel)) {
     const row = document.createElement("label");
     row.textContent = label;
-    const input = document.createElement("input");
+    const input = document.createElement(f.options ? "select" : "input");
     input.dataset.field = label;
-    if (f.check) { input.type = "checkbox"; input.checked = f.get(record(sel)); }
+    if (f.options) {
+      for (const [v, text] of f.options) {
+        const o = document.createElement("option");
+        o.value = v;
+        o.textContent = text;
+        input.appendChild(o);
+      }
+      input.value = f.get(record(sel));
+    } else if (f.check) { input.type = "checkbox"; input.checked = f.get(record(sel)); }
     else if (f.text) { input.type = "text"; input.value = f.get(record(sel)); }
     else { input.type = "number"; input.step = "any"; input.value = +f.get(record(sel)).toPrecision(7); }
     if (f.polygon) {
@@ -760,7 +773,7 @@ function showProps() {
     }
     input.addEventListener("change", () => {
       const value = f.check ? input.checked : f.text ? input.value : +input.value;
-      if (!f.check && !f.text && !isFinite(value)) { problem.textContent = label + ": not a number"; return; }
+      if (!f.check && !f.text && !f.options && !isFinite(value)) { problem.textContent = label + ": not a number"; return; }
       const s = ui.selection;
       edit(() => f.set(record(s), value));
       ui.selection = s;

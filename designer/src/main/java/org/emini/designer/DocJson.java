@@ -104,7 +104,8 @@ final class DocJson {
     }
 
     /**
-     * A world file from a document; scripts and script bindings are taken from {@code scriptsFrom}.
+     * A world file from a document; scripts and script bindings are taken from {@code scriptsFrom} when
+     * the document came from it (its "scripts" count is that file's).
      *
      * @param json the document
      * @param scriptsFrom the world file whose scripts to keep, or null
@@ -164,7 +165,8 @@ final class DocJson {
         for (int i = 0; i < emitters.size(); i++) {
             w.getParticleEmitters().add(emitter(new Doc(emitters.get(i), "emitters[" + i + "]")));
         }
-        if (scriptsFrom != null) {
+        // Only a document that came from that file (it counts the file's scripts) keeps them.
+        if (scriptsFrom != null && d.integer("scripts", 0) > 0 && d.integer("scripts", 0) == scriptsFrom.getScripts().size()) {
             w.getScripts().addAll(scriptsFrom.getScripts());
             w.getScriptBindings().addAll(scriptsFrom.getScriptBindings());
         }

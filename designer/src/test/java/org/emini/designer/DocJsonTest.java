@@ -18,6 +18,9 @@ import org.emini.harness.convert.ScenarioToWorld;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.load.SchemaCheck;
 import org.emini.io.PhyReader;
+import org.emini.io.PhyScript;
+import org.emini.io.PhyScriptBinding;
+import org.emini.io.PhyScriptElement;
 import org.emini.io.PhyWorld;
 import org.emini.io.PhyWriter;
 import org.junit.jupiter.api.Test;
@@ -65,8 +68,28 @@ class DocJsonTest {
                 assertEquals(read.getConstraints(), back.getConstraints(), f.toString());
                 assertEquals(read.getEvents(), back.getEvents(), f.toString());
                 assertEquals(read.getParticleEmitters(), back.getParticleEmitters(), f.toString());
+                assertEquals(read.getScripts(), back.getScripts(), f.toString());
+                // A document that did not come from the file (a new one) does not inherit its scripts.
+                assertTrue(DocJson.read("{}", read).getScripts().isEmpty(), f.toString());
             }
         }
+    }
+
+    @Test
+    void aFileKeepsItsScriptsThroughTheDocumentAndANewDocumentHasNone() {
+        PhyWorld file = DocJson.read("{\"shapes\":[{\"kind\":\"circle\",\"vertices\":[40960,0]}],"
+                + "\"bodies\":[{\"shape\":0,\"position\":[0,0]}]}", null);
+        PhyScript script = new PhyScript();
+        script.getElements().add(new PhyScriptElement(0, 4096, 0, 20));
+        file.getScripts().add(script);
+        file.getScriptBindings().add(new PhyScriptBinding(0, 0));
+        String json = DocJson.write(file);
+        PhyWorld back = DocJson.read(json, file);
+        assertEquals(file.getScripts(), back.getScripts());
+        assertEquals(file.getScriptBindings(), back.getScriptBindings());
+        assertArrayEquals(new PhyWriter().write(file), new PhyWriter().write(back));
+        PhyWorld fresh = DocJson.read(json.replace("\"scripts\":1", "\"scripts\":0"), file);
+        assertTrue(fresh.getScripts().isEmpty() && fresh.getScriptBindings().isEmpty());
     }
 
     @Test
