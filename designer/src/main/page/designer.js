@@ -204,6 +204,19 @@ function draw() {
       }
     });
   }
+  if (ui.replay) {   // the trace's paths, faint, under the bodies
+    ctx.strokeStyle = "#c9a26a";
+    ctx.lineWidth = 1;
+    for (const b of Object.values(ui.replay.trace.bodies)) {
+      ctx.beginPath();
+      b.x.forEach((x, i) => {
+        if (x === null || b.y[i] === null) return;
+        const s = toScreen(x, b.y[i]);
+        if (i === 0) ctx.moveTo(s[0], s[1]); else ctx.lineTo(s[0], s[1]);
+      });
+      ctx.stroke();
+    }
+  }
   const replayPose = ui.replay ? replayPoses() : null;
   ui.geometry.bodies.forEach((b, k) => {
     let p = pose(frame, k);

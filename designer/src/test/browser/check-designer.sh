@@ -63,6 +63,16 @@ java -cp "$cp" org.emini.designer.SceneExport scenarios/joints/ragdoll-stairs-60
 opened=$(timeout 120 python3 designer/src/test/browser/run-page.py "$CHROMIUM" "$url#open=open-check.js&report" 60 "$shots/designer-scene.png") || true
 echo "check-designer: scene opened: $opened"
 case "$opened" in *'"ok":true'*) ;; *) echo "check-designer: FAILED: the page did not open the exported scene" >&2; exit 1 ;; esac
+# A trace that ./emini run writes, chosen with the page's Open button (over the scene it belongs to).
+trace=harness/target/dashboard-smoke/traces/closed-form/projectile-20hz.trace.json
+if [ -f "$trace" ]; then
+  java -cp "$cp" org.emini.designer.SceneExport scenarios/closed-form/projectile-20hz.yaml "$page/open-trace-check.js" >/dev/null
+  traced=$(EMINI_FILE_INPUT="$trace" EMINI_FILE_READY="doc && doc.bodies.length && doc.bodies[0].userData" \
+    EMINI_FILE_THEN="reportReplay()" timeout 120 python3 designer/src/test/browser/run-page.py "$CHROMIUM" \
+    "$url#open=open-trace-check.js" 60 "$shots/designer-trace.png") || true
+  echo "check-designer: trace opened: $traced"
+  case "$traced" in *'"ok":true'*) ;; *) echo "check-designer: FAILED: the page did not replay $trace" >&2; exit 1 ;; esac
+fi
 # The dashboard's replay linked into the page (when ./emini test has written the smoke dashboard).
 replay=$(ls harness/target/dashboard-smoke/dashboard/replay/r*.js 2>/dev/null | head -n 1 || true)
 if [ -n "$replay" ]; then

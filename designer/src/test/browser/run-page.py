@@ -6,6 +6,10 @@ standard library only. Unlike --dump-dom with --virtual-time-budget, the page ru
 its performance.now() measures (the designer's ms per tick).
 
     run-page.py CHROMIUM URL TIMEOUT_SECONDS [SCREENSHOT.png] [WIDTHxHEIGHT]
+
+With EMINI_FILE_INPUT=PATH and EMINI_FILE_READY=EXPR, once EXPR is true in the page the file is put
+into the page's file input (#open) as a user's choice would (DOM.setFileInputFiles), and
+EMINI_FILE_THEN (an expression) runs after its change event.
 """
 import base64
 import json
@@ -89,6 +93,19 @@ def main():
     try:
         browser.open(url)
         deadline = time.time() + timeout
+        path = os.environ.get("EMINI_FILE_INPUT")
+        if path:
+            ready = os.environ.get("EMINI_FILE_READY", "true")
+            while time.time() < deadline and not browser.evaluate("(() => { try { return !!(%s); } catch (e) { return false; } })()" % ready):
+                time.sleep(0.25)
+            root = browser.call("DOM.getDocument")["root"]["nodeId"]
+            node = browser.call("DOM.querySelector", {"nodeId": root, "selector": "#open"})["nodeId"]
+            browser.call("DOM.setFileInputFiles", {"files": [os.path.abspath(path)], "nodeId": node})
+            then = os.environ.get("EMINI_FILE_THEN")
+            if then:
+                while time.time() < deadline and not browser.evaluate("!!(ui.replay)"):
+                    time.sleep(0.25)
+                browser.evaluate(then)
         text = None
         while time.time() < deadline:
             text = browser.evaluate("(() => { const e = document.getElementById('selftest-result');"
