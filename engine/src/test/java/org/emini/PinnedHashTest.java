@@ -24,6 +24,18 @@ class PinnedHashTest {
         assertEquals(PINNED_FIXED, scene.hash(), () -> String.format("new hash 0x%016XL", scene.hash()));
     }
 
+    /**
+     * With manifold reuse off every contact is collided every tick, as before reuse existed (that hash,
+     * 0xB2FDEF96D1FDE5A9, held until circle contacts stopped turning their point with the circle).
+     */
+    @Test
+    void everythingSceneCollidedEveryTickKeepsTheHashPinnedBeforeManifoldReuse() {
+        EverythingScene scene = new EverythingScene(false);
+        scene.world.getSolverSettings().setManifoldReuseDistance(0f);
+        scene.run(TICKS);
+        assertEquals(PINNED_FIXED_NO_REUSE, scene.hash(), () -> String.format("new hash 0x%016XL", scene.hash()));
+    }
+
     @Test
     void everythingSceneWithDynamicIterationsKeepsItsPinnedHash() {
         EverythingScene scene = new EverythingScene(true);
@@ -56,7 +68,10 @@ class PinnedHashTest {
             world.tick();
             used += world.getLastIterationCount();
         }
-        assertTrue(used < 0.8f * TICKS * world.getConstraintIterations(), "iterations used " + used);
+        // With manifold reuse the pile ends calmer (fastest box over the last 100 ticks 0.0012 px/s,
+        // against 0.35 when collided every tick) but the convergence test stops later: 82% of the
+        // cap, 66% before.
+        assertTrue(used < 0.85f * TICKS * world.getConstraintIterations(), "iterations used " + used);
         long h = EverythingScene.bodyHash(world);
         long hash = 31 * h + used;
         assertEquals(PINNED_DYNAMIC, hash, () -> String.format("new hash 0x%016XL", hash));
@@ -70,7 +85,8 @@ class PinnedHashTest {
         assertTrue(scene.world.getParticleEmitter(0).getParticleCount() > 0, "particles");
     }
 
-    static final long PINNED_FIXED = 0xB2FDEF96D1FDE5A9L;
-    static final long PINNED_EVERYTHING_DYNAMIC = 0x16F0BB0A24A25F6AL;
-    static final long PINNED_DYNAMIC = 0x597F7853A239F1DCL;
+    static final long PINNED_FIXED = 0xE62DC1ABDC184AACL;
+    static final long PINNED_FIXED_NO_REUSE = 0xDB5A1757FE58D268L;
+    static final long PINNED_EVERYTHING_DYNAMIC = 0x377D9A09855C7194L;
+    static final long PINNED_DYNAMIC = 0x5E01067FB68EC65BL;
 }

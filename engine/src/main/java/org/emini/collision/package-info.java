@@ -1,5 +1,9 @@
 /**
- * Collision detection. {@link org.emini.collision.BroadPhase}, dynamic trees of fat bounding boxes
+ * Collision detection: the engine's internals, not for users (apart from {@link
+ * org.emini.collision.QueryCallback}, the callback of the world's queries). These classes are public
+ * so that the engine's packages can share them; they may change in any release.
+ *
+ * <p> {@link org.emini.collision.BroadPhase}, dynamic trees of fat bounding boxes
  * (one for static bodies, one for moving ones), finds the pairs of bodies that came close; {@link org.emini.collision.Collider} turns a pair of
  * placed shapes into a {@link org.emini.collision.Manifold} of at most two contact points with a
  * shared normal, including speculative points that still have a small gap. {@link

@@ -1,6 +1,7 @@
 package org.emini.constraint;
 
 import org.emini.dynamics.Body;
+import org.emini.dynamics.CopyMapping;
 import org.emini.dynamics.SolverStep;
 import org.emini.internal.Check;
 import org.emini.math.EMath;
@@ -83,6 +84,26 @@ public final class Joint extends TwoBodyConstraint {
         referenceCos = ca * cb + sa * sb;
         referenceSin = ca * sb - sa * cb;
         referenceAngle = b.getAngle() - a.getAngle();
+    }
+
+    /** A copy on other bodies: the same anchors, and the same locked angle whatever the bodies' now. */
+    private Joint(Joint j, Body a, Body b) {
+        super("Joint.copy", a, b, j.localAX, j.localAY, j.localBX, j.localBY);
+        fixed = j.fixed;
+        referenceCos = j.referenceCos;
+        referenceSin = j.referenceSin;
+        referenceAngle = j.referenceAngle;
+        if (j.softness != null) {
+            setStiffness(j.getLinearHertz(), j.getAngularHertz(), j.getDampingRatio());
+        }
+    }
+
+    /**
+     * {@inheritDoc} A fixed joint's copy locks the same relative angle as this one.
+     */
+    @Override
+    public Joint copy(CopyMapping mapping) {
+        return copyCommon(new Joint(this, mapping.body(bodyA), mapping.body(bodyB)));
     }
 
     /**

@@ -2,6 +2,7 @@ package org.emini.constraint;
 
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
+import org.emini.dynamics.CopyMapping;
 import org.emini.dynamics.SolverStep;
 import org.emini.internal.Check;
 import org.emini.math.EMath;
@@ -22,8 +23,31 @@ import org.emini.math.EMath;
  * <p>The limit applies per substep: the impulse accumulated over a substep h is clamped to
  * maxForce·h, so the motor never exerts more than maxForce on average. A motor acts through the
  * body's own mass: on a static body it does nothing.
+ *
+ * <p>An application may extend it, as the manual's game does with its sprite control: a subclass
+ * may override {@link #prepare(SolverStep)} (the original's {@code precalculate}), which runs once
+ * per tick before the solve, to change the target or give the body an impulse or velocity that acts
+ * in that tick, and must call {@code super.prepare(step)}. The solve itself ({@code warmStart},
+ * {@code solve}, {@code finish}) is final. A subclass that is copied with its world overrides
+ * {@link #copy(CopyMapping)}, which otherwise makes a plain {@code Motor}.
+ *
+ * <pre>{@code
+ * class SpriteControl extends Motor {
+ *     float jump;                                   // set by the input, px/s upwards
+ *     SpriteControl(Body sprite) {
+ *         super(sprite, 0f, 0f, 1000f);             // linear, x driven by setTargetVelocity(v, 0)
+ *     }
+ *     public void prepare(SolverStep step) {
+ *         if (jump != 0f) {
+ *             getBody().applyAcceleration(0f, -jump, 1f);   // the velocity changes in this tick
+ *             jump = 0f;
+ *         }
+ *         super.prepare(step);
+ *     }
+ * }
+ * }</pre>
  */
-public final class Motor implements Constraint {
+public class Motor implements Constraint {
     private final Body body;
     private boolean rotational;
     private boolean relative;
@@ -56,6 +80,7 @@ public final class Motor implements Constraint {
     private float tickAngular;
     private float force;
     private float breakForce = Float.POSITIVE_INFINITY;
+    private Object userData;
     // The motor's frame in the current solve (the body's rotation in relative mode).
     private float frameC = 1f;
     private float frameS;
@@ -245,7 +270,7 @@ public final class Motor implements Constraint {
     }
 
     @Override
-    public boolean concernsBody(Body b) {
+    public final boolean concernsBody(Body b) {
         return b == body;
     }
 
@@ -263,7 +288,7 @@ public final class Motor implements Constraint {
     }
 
     @Override
-    public void warmStart(SolverStep step) {
+    public final void warmStart(SolverStep step) {
         if (index == 0) {
             return;
         }
@@ -289,7 +314,7 @@ public final class Motor implements Constraint {
     }
 
     @Override
-    public float solve(SolverStep step, boolean useBias) {
+    public final float solve(SolverStep step, boolean useBias) {
         if (index == 0) {
             return 0f;
         }
@@ -377,7 +402,7 @@ public final class Motor implements Constraint {
     }
 
     @Override
-    public void finish(SolverStep step) {
+    public final void finish(SolverStep step) {
         float inv = 1f / step.getTimestep();
         force = rotational ? Math.abs(tickAngular) * inv : EMath.length(tickX, tickY) * inv;
     }
@@ -389,7 +414,7 @@ public final class Motor implements Constraint {
      * @return the magnitude (mass·px/s², or mass·px²/s² for a rotational motor)
      */
     @Override
-    public float getForce() {
+    public final float getForce() {
         return force;
     }
 
@@ -408,6 +433,31 @@ public final class Motor implements Constraint {
     @Override
     public float getBreakForce() {
         return breakForce;
+    }
+
+    @Override
+    public Object getUserData() {
+        return userData;
+    }
+
+    /**
+     * Attaches an application object to this motor.
+     *
+     * @param userData any object, or null
+     */
+    public void setUserData(Object userData) {
+        this.userData = userData;
+    }
+
+    @Override
+    public Motor copy(CopyMapping mapping) {
+        Motor copy = rotational ? new Motor(mapping.body(body), targetAngular, maxForce)
+            : new Motor(mapping.body(body), targetX, targetY, maxForce);
+        copy.relative = relative;
+        copy.orthogonal = orthogonal;
+        copy.breakForce = breakForce;
+        copy.userData = userData;
+        return copy;
     }
 
     @Override

@@ -1,6 +1,7 @@
 package org.emini.constraint;
 
 import org.emini.dynamics.Body;
+import org.emini.dynamics.CopyMapping;
 import org.emini.dynamics.SolverStep;
 import org.emini.internal.Check;
 import org.emini.math.EMath;
@@ -31,6 +32,12 @@ import org.emini.math.EMath;
 public final class Spring extends TwoBodyConstraint {
     /** Anchors closer than this have no direction: the spring then does nothing (the original's rule). */
     private static final float MIN_LENGTH = 1e-4f;
+
+    /**
+     * The rest length that means "the anchors' distance when the spring is made": the original's
+     * {@code -1} (any negative rest length given to the constructor does the same).
+     */
+    public static final float MEASURE_DISTANCE = -1f;
 
     private float restLength;
     private float coefficient;
@@ -77,11 +84,23 @@ public final class Spring extends TwoBodyConstraint {
      * @param ay y of the anchor in a's own frame (px)
      * @param bx x of the anchor in b's own frame (px)
      * @param by y of the anchor in b's own frame (px)
-     * @param restLength the rest length (px), &ge; 0
+     * @param restLength the rest length (px), &ge; 0; a negative one ({@link #MEASURE_DISTANCE}) means
+     *     the anchors' distance now, as in the original engine
      */
     public Spring(Body a, Body b, float ax, float ay, float bx, float by, float restLength) {
         super("Spring", a, b, ax, ay, bx, by);
-        this.restLength = Check.nonNegative("Spring", "restLength", restLength);
+        Check.finite("Spring", "restLength", restLength);
+        this.restLength = restLength < 0f ? getLength() : restLength;
+    }
+
+    @Override
+    public Spring copy(CopyMapping mapping) {
+        Spring copy = new Spring(mapping.body(bodyA), mapping.body(bodyB), localAX, localAY, localBX, localBY, restLength);
+        copy.coefficient = coefficient;
+        copy.damping = damping;
+        copy.hertz = hertz;
+        copy.dampingRatio = dampingRatio;
+        return copyCommon(copy);
     }
 
     /**

@@ -54,6 +54,7 @@ public abstract class TwoBodyConstraint implements Constraint {
     /** What {@link #getForce()} reports. */
     float force;
     private float breakForce = Float.POSITIVE_INFINITY;
+    private Object userData;
 
     TwoBodyConstraint(String where, Body a, Body b, float ax, float ay, float bx, float by) {
         Require.inWorld(where, "body a", a);
@@ -314,5 +315,26 @@ public abstract class TwoBodyConstraint implements Constraint {
     @Override
     public float getBreakForce() {
         return breakForce;
+    }
+
+    @Override
+    public Object getUserData() {
+        return userData;
+    }
+
+    /**
+     * Attaches an application object to this constraint.
+     *
+     * @param userData any object, or null
+     */
+    public void setUserData(Object userData) {
+        this.userData = userData;
+    }
+
+    /** Gives a copy this constraint's break force and user data (what every kind shares). */
+    <T extends TwoBodyConstraint> T copyCommon(T copy) {
+        copy.setBreakForce(breakForce);
+        copy.setUserData(userData);
+        return copy;
     }
 }

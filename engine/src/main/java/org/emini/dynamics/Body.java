@@ -2,6 +2,9 @@ package org.emini.dynamics;
 
 import org.emini.internal.Check;
 import org.emini.math.EMath;
+import org.emini.shape.Circle;
+import org.emini.shape.MultiShape;
+import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 
 /**
@@ -22,6 +25,16 @@ import org.emini.shape.Shape;
  *
  * <p>Which pairs collide: see {@link #setCollisionLayers(int)} (the original engine's layers) and
  * {@link #setCategoryBits(int)} (Box2D's categories, mask and group); both must allow a pair.
+ *
+ * <pre>{@code
+ * Shape crate = Shape.createRectangle(20, 20);   // mass, friction and elasticity live on the shape
+ * Body body = new Body(100, 50, crate, true);    // dynamic, at (100, 50)
+ * body.setAngleDegrees(30);
+ * body.setVelocity(40, -80);                     // px/s, y down the screen
+ * world.addBody(body);
+ * world.tick();
+ * body.applyImpulse(0, -50);                     // a kick upwards: Δv = j / m at once
+ * }</pre>
  */
 public final class Body {
     private Shape shape;
@@ -133,6 +146,71 @@ public final class Body {
         vx = other.vx;
         vy = other.vy;
         w = other.w;
+    }
+
+    /**
+     * A copy of this body (the original's {@code copy()}): {@link #Body(Body)}.
+     *
+     * @return the copy, not in any world
+     */
+    public Body copy() {
+        return new Body(this);
+    }
+
+    /**
+     * The outline of the body's shape in world coordinates, where the body is now (the original's
+     * {@code getVertices()}), for drawing. A polygon gives its corners in order; a circle one point,
+     * on its rim at the body's angle (as in the original, where a circle is a shape with one
+     * vertex: its distance from the centre is the radius). A multi-shape gives its parts'
+     * outlines one after another (a circle part as its rim point); use
+     * {@link org.emini.shape.MultiShape#getShape(int)} to tell them apart. Allocates the array.
+     *
+     * @return x0, y0, x1, y1, ... (px)
+     */
+    public float[] getVertices() {
+        int n = outlineLength(shape);
+        float[] out = new float[n];
+        writeOutline(shape, out, 0);
+        return out;
+    }
+
+    private static int outlineLength(Shape s) {
+        if (s instanceof Polygon) {
+            return 2 * ((Polygon) s).getVertexCount();
+        }
+        if (s instanceof MultiShape) {
+            MultiShape m = (MultiShape) s;
+            int n = 0;
+            for (int i = 0; i < m.getShapeCount(); i++) {
+                n += outlineLength(m.getShape(i));
+            }
+            return n;
+        }
+        return 2;
+    }
+
+    private int writeOutline(Shape s, float[] out, int at) {
+        if (s instanceof Polygon) {
+            Polygon p = (Polygon) s;
+            for (int i = 0; i < p.getVertexCount(); i++) {
+                out[at++] = toWorldX(p.getVertexX(i), p.getVertexY(i));
+                out[at++] = toWorldY(p.getVertexX(i), p.getVertexY(i));
+            }
+            return at;
+        }
+        if (s instanceof MultiShape) {
+            MultiShape m = (MultiShape) s;
+            for (int i = 0; i < m.getShapeCount(); i++) {
+                at = writeOutline(m.getShape(i), out, at);
+            }
+            return at;
+        }
+        Circle c = (Circle) s;
+        float lx = c.getCenterX() + c.getRadius();
+        float ly = c.getCenterY();
+        out[at++] = toWorldX(lx, ly);
+        out[at++] = toWorldY(lx, ly);
+        return at;
     }
 
     /**
@@ -948,6 +1026,24 @@ public final class Body {
             world.sleep.wake(this);
             world.solver.forcesChanged(this);
         }
+    }
+
+    /**
+     * Changes the velocity now by a·dt, the original's {@code applyAcceleration(a, dtFX)}: an
+     * impulse m·a·dt at the centre of mass ({@link #applyImpulse}). With dt the world's timestep it
+     * does in one go what {@link #applyAcceleration(float, float)} does over the tick; the manual's
+     * jump gives dt = 1 s, a velocity change of a. Static bodies do not move.
+     *
+     * @param ax x component (px/s²)
+     * @param ay y component (px/s²)
+     * @param dt the time the acceleration acts (s), finite
+     */
+    public void applyAcceleration(float ax, float ay, float dt) {
+        Check.finite("Body.applyAcceleration", "ax", ax);
+        Check.finite("Body.applyAcceleration", "ay", ay);
+        Check.finite("Body.applyAcceleration", "dt", dt);
+        float m = shape.getMass();
+        applyImpulse(m * ax * dt, m * ay * dt);
     }
 
     /**

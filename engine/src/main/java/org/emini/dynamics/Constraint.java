@@ -97,4 +97,31 @@ public interface Constraint {
      * @return the force (mass·px/s²), or torque (mass·px²/s²)
      */
     float getForce();
+
+    /**
+     * A copy of this constraint for a copied world (the original's {@code copy(Body[])}): the same
+     * settings on the copies of its bodies, with no accumulated impulse. The copy is not yet in a
+     * world; its bodies already are. The built-in constraints of the manual ({@code Joint},
+     * {@code Spring}, {@code Motor}) implement it; the default refuses, naming the class, so a
+     * world holding a constraint that cannot be copied is not copied without it.
+     *
+     * @param mapping the copies of the bodies
+     * @return the copy
+     * @throws UnsupportedOperationException when this constraint cannot be copied
+     */
+    default Constraint copy(CopyMapping mapping) {
+        throw new UnsupportedOperationException(getClass().getName() + ".copy: this constraint cannot be copied; override"
+            + " Constraint.copy(CopyMapping) to copy a world that holds it");
+    }
+
+    /**
+     * The application's object attached to this constraint (the original's
+     * {@code Constraint.getUserData}). The built-in constraints keep one ({@code setUserData});
+     * the default has none.
+     *
+     * @return the user data, or null
+     */
+    default Object getUserData() {
+        return null;
+    }
 }

@@ -65,6 +65,24 @@ public final class Contact {
     float maxNormalImpulse1;
     float friction;
     float restitution;
+    // ManifoldReuse: whether the points may be reused, the pose they were found at (B's in A's frame;
+    // A's in the world for a landscape contact), the normal in that frame, and each point's two
+    // surface points, on A in A's frame and on B in B's frame (the world for a landscape contact).
+    boolean reusable;
+    float poseX;
+    float poseY;
+    float poseC;
+    float poseS;
+    float frameNormalX;
+    float frameNormalY;
+    float surfaceAX0;
+    float surfaceAY0;
+    float surfaceBX0;
+    float surfaceBY0;
+    float surfaceAX1;
+    float surfaceAY1;
+    float surfaceBX1;
+    float surfaceBY1;
 
     // The contact's place in the world's list of every contact object, and how many times the
     // object has ended: together its handle.

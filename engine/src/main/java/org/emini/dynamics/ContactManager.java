@@ -30,6 +30,8 @@ final class ContactManager implements PairCallback, QueryCallback {
     private final Simulation world;
     private final PartKeys parts;
     private final Collider collider = new Collider();
+    // This tick's ManifoldReuse tolerance: the setting, at most half the speculative distance.
+    private float reuseTolerance;
     private final Manifold manifold = new Manifold();
     private final Segment segment = new Segment();
     Contact[] contacts = new Contact[64];
@@ -247,6 +249,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         last.index = i;
         contacts[count] = null;
         c.index = -1;
+        c.reusable = false;
         c.generation++;
         c.bodyA = null;
         c.bodyB = null;
@@ -417,6 +420,7 @@ final class ContactManager implements PairCallback, QueryCallback {
      * bodies moving several pixels per tick are caught before they overlap.
      */
     void collide(BroadPhase broadPhase, float dt, float speculative, int from) {
+        reuseTolerance = Math.min(world.getSolverSettings().getManifoldReuseDistance(), 0.5f * speculative);
         int kept = from;
         for (int i = from; i < activeCount; i++) {
             Contact c = active[i];
@@ -463,12 +467,20 @@ final class ContactManager implements PairCallback, QueryCallback {
             destroy(c);
             return false;
         }
-        float margin = speculative + dt * (sweepSpeed(a) + sweepSpeed(b));
-        collider.collide(part(a.getShape(), c.partA), a.x, a.y, a.c, a.s, part(b.getShape(), c.partB), b.x, b.y,
-            b.c, b.s, margin, manifold);
+        float sweep = dt * (sweepSpeed(a) + sweepSpeed(b));
         Shape sa = a.getShape();
         Shape sb = b.getShape();
-        update(c, manifold, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity());
+        if (ManifoldReuse.reuse(c, a, b, sweep, reuseTolerance)) {
+            c.friction = sa.getFriction() * sb.getFriction();
+            c.restitution = sa.getElasticity() * sb.getElasticity();
+        } else {
+            Shape pa = part(sa, c.partA);
+            Shape pb = part(sb, c.partB);
+            collider.collide(pa, a.x, a.y, a.c, a.s, pb, b.x, b.y, b.c, b.s, speculative + sweep, manifold);
+            update(c, manifold, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity());
+            ManifoldReuse.remember(c, a, b, pa.getType() != Shape.TYPE_CIRCLE && pb.getType() != Shape.TYPE_CIRCLE, sweep,
+                reuseTolerance);
+        }
         touch(c, speculative);
         return true;
     }
@@ -485,21 +497,28 @@ final class ContactManager implements PairCallback, QueryCallback {
             return false;
         }
         c.filterDirty = false;
+        float sweep = dt * sweepSpeed(a);
+        Shape whole = a.getShape();
+        if (ManifoldReuse.reuse(c, a, null, sweep, reuseTolerance)) {
+            c.friction = whole.getFriction() * l.getFriction();
+            c.restitution = whole.getElasticity() * l.getElasticity();
+            touch(c, speculative);
+            return true;
+        }
         l.fill(slot, segment);
         segment.side = c.pointCount > 0 ? c.segmentSide : 0;
-        float margin = speculative + dt * sweepSpeed(a);
         // The body's centre of mass decides the side, for every part alike.
-        Shape whole = a.getShape();
         float cx = whole.getCentroidX();
         float cy = whole.getCentroidY();
-        collider.collideSegment(segment, part(whole, c.partA), a.x, a.y, a.c, a.s, a.x + a.c * cx - a.s * cy,
-            a.y + a.s * cx + a.c * cy, margin, manifold);
+        Shape pa = part(whole, c.partA);
+        collider.collideSegment(segment, pa, a.x, a.y, a.c, a.s, a.x + a.c * cx - a.s * cy,
+            a.y + a.s * cx + a.c * cy, speculative + sweep, manifold);
         c.segmentSide = collider.getSegmentSide();
         // The collider's normal points from the segment to the body; the contact's from A, the body.
         manifold.normalX = -manifold.normalX;
         manifold.normalY = -manifold.normalY;
-        Shape sa = a.getShape();
-        update(c, manifold, sa.getFriction() * l.getFriction(), sa.getElasticity() * l.getElasticity());
+        update(c, manifold, whole.getFriction() * l.getFriction(), whole.getElasticity() * l.getElasticity());
+        ManifoldReuse.remember(c, a, null, pa.getType() != Shape.TYPE_CIRCLE, sweep, reuseTolerance);
         touch(c, speculative);
         return true;
     }

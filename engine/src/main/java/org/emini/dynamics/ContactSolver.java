@@ -1,5 +1,8 @@
 package org.emini.dynamics;
 
+import org.emini.shape.Circle;
+import org.emini.shape.Shape;
+
 import static org.emini.dynamics.SolverBodies.DPX;
 import static org.emini.dynamics.SolverBodies.DPY;
 import static org.emini.dynamics.SolverBodies.DQC;
@@ -41,7 +44,11 @@ final class ContactSolver {
     private static final int K11 = 8;
     private static final int K12 = 9;
     private static final int K22 = 10;
-    private static final int P0 = 12;
+    // A circle's contact point does not turn with the circle: the separation follows the circle's
+    // centre, the point's arm minus K times the normal (K 0 for a body without a circle there).
+    private static final int CIRCLE_A = 11;
+    private static final int CIRCLE_B = 12;
+    private static final int P0 = 13;
     // Per-point floats, relative to the point block.
     private static final int RAX = 0;
     private static final int RAY = 1;
@@ -195,6 +202,14 @@ final class ContactSolver {
             float vbx = st[ob + VX];
             float vby = st[ob + VY];
             float wb = st[ob + W];
+            // The point lies midway, half the separation beyond each surface (a circle has one point).
+            float half = c.pointCount > 0 ? 0.5f * c.separation0 : 0f;
+            float kA = circleRadius(a, c.partA);
+            float kB = c.bodyB != null ? circleRadius(b, c.partB) : 0f;
+            kA = kA > 0f ? kA + half : 0f;
+            kB = kB > 0f ? -(kB + half) : 0f;
+            f[fo + CIRCLE_A] = kA;
+            f[fo + CIRCLE_B] = kB;
             for (int p = 0; p < c.pointCount; p++) {
                 int po = fo + P0 + p * PS;
                 float cpx = c.pointX(p);
@@ -207,7 +222,7 @@ final class ContactSolver {
                 f[po + RAY] = ray;
                 f[po + RBX] = rbx;
                 f[po + RBY] = rby;
-                f[po + BASE_SEP] = c.separation(p) - ((rbx - rax) * nx + (rby - ray) * ny);
+                f[po + BASE_SEP] = c.separation(p) - ((rbx - rax) * nx + (rby - ray) * ny) + kB - kA;
                 float rna = rax * ny - ray * nx;
                 float rnb = rbx * ny - rby * nx;
                 float kn = mA + mB + iA * rna * rna + iB * rnb * rnb;
@@ -230,6 +245,12 @@ final class ContactSolver {
                 prepareBlock(fo, mA, iA, mB, iB, nx, ny, maxCondition);
             }
         }
+    }
+
+    /** The radius of a body's part if it is a circle, else 0. */
+    private static float circleRadius(Body body, int part) {
+        Shape shape = ContactManager.part(body.getShape(), part);
+        return shape.getType() == Shape.TYPE_CIRCLE ? ((Circle) shape).getRadius() : 0f;
     }
 
     /**
@@ -711,7 +732,8 @@ final class ContactSolver {
                 float pray = qas * rax + qac * ray;
                 float prbx = qbc * rbx - qbs * rby;
                 float prby = qbs * rbx + qbc * rby;
-                float sep = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + f[po + BASE_SEP];
+                float sep = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + (f[fo + CIRCLE_A] * qac - f[fo + CIRCLE_B] * qbc)
+                    + f[po + BASE_SEP];
                 float bias = 0f;
                 float massScale = 1f;
                 float impulseScale = 0f;
@@ -788,7 +810,8 @@ final class ContactSolver {
                     float tm = f[po + TMASS];
                     float dv = Math.max((dn < 0f ? -dn : dn) * f[po + KN], tm > 0f ? (dt < 0f ? -dt : dt) / tm : 0f);
                     float sep = (dpx + qbc * rbx - qbs * rby - qac * rax + qas * ray) * nx
-                        + (dpy + qbs * rbx + qbc * rby - qas * rax - qac * ray) * ny + f[po + BASE_SEP];
+                        + (dpy + qbs * rbx + qbc * rby - qas * rax - qac * ray) * ny
+                        + (f[fo + CIRCLE_A] * qac - f[fo + CIRCLE_B] * qbc) + f[po + BASE_SEP];
                     if (sep > 0f) {
                         // A gap that could close before the tick ends needs the solve: warm starts alone
                         // would let the bodies pass into each other. Gravity closes only gaps to static

@@ -1,6 +1,12 @@
 /**
  * Bodies, the world and its tick, the landscape, contacts and the soft-step contact solver.
  *
+ * <p>For users: {@link org.emini.dynamics.Body}, {@link org.emini.dynamics.Landscape},
+ * {@link org.emini.dynamics.Contact}, {@link org.emini.dynamics.StepData}, the queries' types and
+ * {@link org.emini.dynamics.SolverSettings}. {@link org.emini.dynamics.SolverStep} is the solver's
+ * state during a tick, for authors of their own {@link org.emini.dynamics.Constraint} only; the
+ * solver's other classes are package-private.
+ *
  * <p>A contact is born in {@code ContactManager} when the broadphase reports a new pair, updated
  * there by the narrowphase each tick, solved in {@code ContactSolver} on flat arrays prepared from
  * {@code SolverBodies}, and forgotten when the pair's bounding boxes separate. Landscape contacts

@@ -6,6 +6,7 @@ import org.emini.collision.Manifold;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 import org.emini.dynamics.Contact;
+import org.emini.dynamics.CopyMapping;
 import org.emini.dynamics.Simulation;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
@@ -55,6 +56,7 @@ public final class Event {
     private final float t4;
     private boolean triggerOnce;
     private Object userData;
+    private Script script;
     private final IdentitySet reported = new IdentitySet();
     // Scratch, so checking allocates nothing: a body's contacts, and the sensor's overlap test.
     private Contact[] contacts;
@@ -308,6 +310,45 @@ public final class Event {
         triggerOnce = once;
     }
 
+    /**
+     * A copy of this event for a copied world: the same condition, trigger-once setting and user
+     * data, on the copies of its body, sensor body (a sensor outside the world stays shared) and
+     * constraint; nothing reported yet.
+     *
+     * @param mapping the copies of the world's bodies and constraints
+     * @return the copy, not in any world
+     */
+    public Event copy(CopyMapping mapping) {
+        Event copy = new Event(type, body == null ? null : mapping.body(body), shape,
+            constraint == null ? null : mapping.constraint(constraint), sensor == null ? null : mapping.body(sensor),
+            t1, t2, t3, t4);
+        copy.triggerOnce = triggerOnce;
+        copy.userData = userData;
+        copy.script = script;
+        return copy;
+    }
+
+    /**
+     * Attaches a script, the original's {@code Event.setScript}: while the condition holds for a
+     * body, the world starts the script on that body instead of telling the listener (events are
+     * checked only while a listener is set, as in the original). Constraint events have no body and
+     * still tell the listener.
+     *
+     * @param script the script, or null to tell the listener again
+     */
+    public void setScript(Script script) {
+        this.script = script;
+    }
+
+    /**
+     * The script the event starts.
+     *
+     * @return the script, or null
+     */
+    public Script getScript() {
+        return script;
+    }
+
     /** Forgets what a trigger-once event has reported, so everything may be reported again. */
     public void reset() {
         reported.clear();
@@ -361,7 +402,7 @@ public final class Event {
             default:
                 if (body != null) {
                     if (body.getWorld() == world && wanted(body) && holds(body)) {
-                        fire(body, body, listener);
+                        fire(world, body, body, listener);
                     }
                 } else if (type == SENSOR) {
                     checkBodiesAtSensor(world, listener);
@@ -369,7 +410,7 @@ public final class Event {
                     for (int i = 0, n = world.getBodyCount(); i < n; i++) {
                         Body b = world.getBody(i);
                         if (wanted(b) && holds(b)) {
-                            fire(b, b, listener);
+                            fire(world, b, b, listener);
                         }
                     }
                 }
@@ -386,7 +427,7 @@ public final class Event {
         for (int j = 0, n = near.count(); j < n; j++) {
             Body b = world.getBody(near.get(j));
             if (wanted(b) && holds(b)) {
-                fire(b, b, listener);
+                fire(world, b, b, listener);
             }
         }
     }
@@ -399,7 +440,7 @@ public final class Event {
             }
             float f = c.getForce();
             if (f >= t1 && f <= t2 && !(triggerOnce && reported.contains(c))) {
-                fire(c, c, listener);
+                fire(world, c, c, listener);
             }
         }
     }
@@ -415,7 +456,7 @@ public final class Event {
         n = b.getContacts(contacts);
         for (int k = 0; k < n && wanted(b); k++) {
             if (touches(contacts[k], b)) {
-                fire(b, contacts[k], listener);
+                fire(world, b, contacts[k], listener);
             }
         }
     }
@@ -427,9 +468,9 @@ public final class Event {
             Body b = c.getBodyB();
             // One report per contact: body A's side first. A landscape contact has no body B.
             if (wanted(a) && touches(c, a)) {
-                fire(a, c, listener);
+                fire(world, a, c, listener);
             } else if (b != null && wanted(b) && touches(c, b)) {
-                fire(b, c, listener);
+                fire(world, b, c, listener);
             }
         }
     }
@@ -439,11 +480,16 @@ public final class Event {
         return (shape == null || b.getShape() == shape) && !(triggerOnce && reported.contains(b));
     }
 
-    private void fire(Object key, Object parameter, PhysicsEventListener listener) {
+    private void fire(Simulation world, Object key, Object parameter, PhysicsEventListener listener) {
         if (triggerOnce) {
             reported.add(key);
         }
-        listener.eventTriggered(this, parameter);
+        if (script != null && key instanceof Body && world instanceof ScriptHost) {
+            // The original starts the script on the body instead of telling the listener.
+            ((ScriptHost) world).applyScript(script, (Body) key);
+        } else {
+            listener.eventTriggered(this, parameter);
+        }
     }
 
     private boolean holds(Body b) {

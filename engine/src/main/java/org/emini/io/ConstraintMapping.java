@@ -3,6 +3,7 @@ package org.emini.io;
 import org.emini.constraint.Joint;
 import org.emini.constraint.Motor;
 import org.emini.constraint.Spring;
+import org.emini.constraint.TwoBodyConstraint;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
 
@@ -63,6 +64,15 @@ final class ConstraintMapping {
         } catch (IllegalArgumentException e) {
             r.unsupported(kind, index, e.getMessage());
             return null;
+        }
+    }
+
+    /** Attaches a record's user data to a constraint this class built (a joint, spring or motor). */
+    static void setUserData(Constraint c, Object data) {
+        if (c instanceof Motor) {
+            ((Motor) c).setUserData(data);
+        } else {
+            ((TwoBodyConstraint) c).setUserData(data);
         }
     }
 

@@ -4,9 +4,12 @@ package org.emini.io;
  * The application's hook for user data, as in the original engine: while a world is built from a
  * file, each user-data string the file's version stores is handed to
  * {@link #createNewUserData(String, int)} with the kind of record it belongs to, and the returned
- * object is attached to what was built ({@code setUserData} of bodies, sensor bodies and events;
- * shapes, constraints and emitters have none) and kept in {@link BuildResult#getUserData(PhyElement)} for
- * every record, built or not.
+ * object is attached to what was built ({@code setUserData} of the world, shapes, bodies, sensor
+ * bodies, events and the manual's constraints; emitters have none) and kept in
+ * {@link BuildResult#getUserData(PhyElement)} for every record, built or not.
+ *
+ * <p>The original's {@code UserData.copy()}, which {@code World(World)} called on each object, has
+ * no counterpart: copies of a world share their user-data objects (see PORTING.md).
  * The landscape material's string is discarded, as in the original.
  */
 public interface UserData {

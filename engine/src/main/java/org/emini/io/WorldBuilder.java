@@ -135,10 +135,12 @@ public final class WorldBuilder {
             PhyShapeBase s = shapes.get(i);
             // Multishapes exist only from version 9, which always stores their string.
             userData(r, s, s.isMultiShape() || shapeData, UserData.TYPE_SHAPE);
-            if (s.isMultiShape()) {
-                r.setShape(i, buildMultiShape((PhyMultiShape) s, i, r));
-            } else {
-                r.setShape(i, buildShape((PhyShape) s, i, r));
+            Shape shape = s.isMultiShape() ? buildMultiShape((PhyMultiShape) s, i, r) : buildShape((PhyShape) s, i, r);
+            r.setShape(i, shape);
+            if (shape != null) {
+                // The file's shape numbers are the World Designer's ids (the manual's GraphicsShapeSet).
+                world.getShapeSet().put(i, shape);
+                shape.setUserData(r.getUserData(s));
             }
         }
         List<PhyBody> bodies = document.getBodies();
@@ -154,16 +156,12 @@ public final class WorldBuilder {
             userData(r, constraints.get(i), otherData, UserData.TYPE_CONSTRAINT);
             Constraint c = ConstraintMapping.build(constraints.get(i), i, r, world.getTimestep());
             if (c != null) {
+                ConstraintMapping.setUserData(c, r.getUserData(constraints.get(i)));
                 world.addConstraint(c);
                 r.setConstraint(i, c);
             }
         }
-        for (int i = 0; i < document.getScripts().size(); i++) {
-            r.unsupported(UnsupportedElement.Kind.SCRIPT, i, "the engine has no scripts yet");
-        }
-        for (int i = 0; i < document.getScriptBindings().size(); i++) {
-            r.unsupported(UnsupportedElement.Kind.SCRIPT_BINDING, i, "the engine has no scripts yet");
-        }
+        ScriptMapping.build(document, world, r);
         for (int i = 0; i < document.getEvents().size(); i++) {
             buildEvent(document.getEvents().get(i), i, r, otherData, shapeData);
         }
@@ -178,6 +176,7 @@ public final class WorldBuilder {
         if (document.getSettings() != null) {
             userData(r, document.getSettings(), otherData, UserData.TYPE_WORLD);
             applySettings(document.getSettings(), world, r);
+            world.setUserData(r.getUserData(document.getSettings()));
         }
         return r;
     }

@@ -21,6 +21,18 @@ import org.emini.math.EMath;
  * 0.1 px one does not, and a 0.001 px box ends 50 times its size inside the ground. Boxes up to
  * 1,000 px rest and stack as well as 20 px ones; a polygon's sides may differ by up to the factor
  * 1 / {@link Polygon#RELATIVE_TOLERANCE}.
+ *
+ * <p>A contact's friction and elasticity are the products of the two shapes' factors (as in the
+ * original engine): a bouncy ball needs a bouncy ground too.
+ *
+ * <pre>{@code
+ * Circle ball = Shape.createCircle(10);
+ * ball.setElasticity(0.8f);                  // 0..1; setElasticityPercent(80) as in the original
+ * ball.setMass(2);                           // every body using this shape weighs 2
+ * Polygon ground = Shape.createRectangle(400, 20);
+ * ground.setElasticity(1f);                  // 0.8 × 1: the ball bounces back to 64% of its height
+ * Polygon wedge = Shape.createPolygon(0, 0, 40, 0, 0, -30);   // convex, either winding
+ * }</pre>
  */
 public abstract class Shape {
     /** Type code of {@link Circle}. */
@@ -58,6 +70,8 @@ public abstract class Shape {
     private float inverseInertia;
     private float friction = DEFAULT_FRICTION;
     private float elasticity = DEFAULT_ELASTICITY;
+    private int id = -1;
+    private Object userData;
 
     Shape(ShapeGeometry geometry) {
         area = geometry.area;
@@ -372,6 +386,60 @@ public abstract class Shape {
      * A copy moved by (dx, dy) in the local frame, with the same mass and material.
      */
     abstract Shape translated(float dx, float dy);
+
+    /**
+     * A new shape with the same geometry, mass, material, id and user data (the original's
+     * {@code Shape(Shape)}). Bodies and events tell shapes apart by the object, so the copy is a
+     * different shape to them.
+     *
+     * @return the copy
+     */
+    public Shape copy() {
+        Shape copy = translated(0f, 0f);
+        copy.id = id;
+        copy.userData = userData;
+        return copy;
+    }
+
+    /**
+     * The shape's id: its index in a {@link ShapeSet} (a world file's shapes get their index in the
+     * file, the World Designer's numbering), or what {@link #setId} set; −1 until then.
+     *
+     * @return the id, or −1
+     */
+    public int getId() {
+        return id;
+    }
+
+    /**
+     * Sets the shape's id, for an application that looks up images or sounds by shape.
+     *
+     * @param id the id, &ge; −1 (−1: none)
+     */
+    public void setId(int id) {
+        if (id < -1) {
+            throw new IllegalArgumentException("Shape.setId: id must be >= -1, was " + id);
+        }
+        this.id = id;
+    }
+
+    /**
+     * The application's object attached to this shape.
+     *
+     * @return the user data, or null
+     */
+    public Object getUserData() {
+        return userData;
+    }
+
+    /**
+     * Attaches an application object to this shape (shared by every body using it).
+     *
+     * @param userData any object, or null
+     */
+    public void setUserData(Object userData) {
+        this.userData = userData;
+    }
 
     /** Copies mass, friction and elasticity from another shape. */
     void copyMaterial(Shape other) {

@@ -1,6 +1,7 @@
 package org.emini.world;
 
 import org.emini.dynamics.Body;
+import org.emini.dynamics.CopyMapping;
 
 /**
  * A force from outside the simulated system (wind, buoyancy, magnets, a player's thrust), applied
@@ -21,4 +22,16 @@ public interface ExternalForce {
      * @param timestep the length of the tick (s)
      */
     void applyForce(World world, float timestep);
+
+    /**
+     * The force for a copied world (the original's {@code copy(mapping)}). The default shares this
+     * object, right for a force that keeps no bodies of its own (it reads them from the world it
+     * is given); a force that holds bodies returns a copy on {@code mapping.body(...)} of them.
+     *
+     * @param mapping the copies of the world's bodies and constraints
+     * @return the force to add to the copy
+     */
+    default ExternalForce copy(CopyMapping mapping) {
+        return this;
+    }
 }

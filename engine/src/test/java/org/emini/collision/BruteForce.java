@@ -49,7 +49,10 @@ final class BruteForce {
         double[] best = axes.get(0);
         for (double[] other : axes) {
             double cross = best[0] * other[1] - best[1] * other[0];
-            if (Math.abs(cross) > 1e-4) {
+            // The opposite direction competes too: two centrally symmetric shapes with nearly the
+            // same centre overlap as deeply along −n as along n.
+            boolean opposite = best[0] * other[0] + best[1] * other[1] < 0;
+            if (Math.abs(cross) > 1e-4 || opposite) {
                 return other[2] - best[2];
             }
         }

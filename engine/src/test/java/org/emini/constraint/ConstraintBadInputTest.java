@@ -44,8 +44,8 @@ class ConstraintBadInputTest {
     }
 
     @Test
-    void springsRefuseNegativeLengthsCoefficientsAndNaN() {
-        refused("Spring: restLength must be >= 0, was -1.0", () -> new Spring(a, b, 0f, 0f, 0f, 0f, -1f));
+    void springsRefuseNegativeSetLengthsCoefficientsAndNaN() {
+        refused("Spring: restLength must be a finite number", () -> new Spring(a, b, 0f, 0f, 0f, 0f, Float.NEGATIVE_INFINITY));
         refused("Spring: restLength must be a finite number", () -> new Spring(a, b, 0f, 0f, 0f, 0f, Float.NaN));
         refused("Spring: the two bodies must differ", () -> new Spring(b, b, 0f, 0f, 1f, 0f));
         refused("Spring: body a", () -> new Spring(outside, b, 0f, 0f, 0f, 0f));

@@ -148,7 +148,7 @@ class ConstraintAndEventMappingTest {
     }
 
     @Test
-    void aConstraintTheEngineRefusesIsListed() {
+    void aConstraintTheEngineRefusesIsListedAndANegativeRestLengthIsMeasured() {
         PhyWorld doc = ground(0, 40);
         doc.getConstraints().add(new PhyJoint());
         PhySpring negative = new PhySpring();
@@ -158,8 +158,11 @@ class ConstraintAndEventMappingTest {
         BuildResult r = new WorldBuilder().build(doc);
         assertNull(r.getConstraint(0));
         assertTrue(r.getUnsupported().get(0).getReason().contains("must differ"), r.getUnsupported().toString());
-        assertEquals(UnsupportedElement.Kind.SPRING, r.getUnsupported().get(1).getKind());
-        assertEquals(0, r.getWorld().getConstraintCount());
+        // A negative rest length is the original's "measure the distance": built, at the anchors' distance.
+        assertEquals(1, r.getUnsupported().size(), r.getUnsupported().toString());
+        Spring measured = (Spring) r.getConstraint(1);
+        assertEquals(measured.getLength(), measured.getRestLength(), 0f);
+        assertEquals(1, r.getWorld().getConstraintCount());
     }
 
     @Test

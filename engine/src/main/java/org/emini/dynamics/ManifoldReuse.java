@@ -1,0 +1,157 @@
+package org.emini.dynamics;
+
+/**
+ * Keeps a contact's points while its two bodies barely move relative to each other, instead of
+ * colliding their shapes again (see {@link SolverSettings#getManifoldReuseDistance()}). Each point
+ * is remembered as its two surface points, one fixed on each body; a reused point is the midpoint of
+ * where those are now, its separation their distance along the normal, which turns with A. A
+ * landscape contact's B is the world itself.
+ *
+ * <p>The test bounds how far any point of B has moved in A's frame since the points were found
+ * (A's points are fixed there), plus what the bodies can close in the coming tick: B's origin's
+ * displacement, plus the relative turn times B's bounding radius, plus the tick's sweep.
+ */
+final class ManifoldReuse {
+    private ManifoldReuse() {
+    }
+
+    /**
+     * Remembers the points the narrowphase just found, for a body pair (b not null) or a landscape
+     * contact, if their shapes have corners: a circle's contact point does not turn with the circle
+     * but stays under its centre as it rolls, and circles are cheap to collide anyway.
+     */
+    static void remember(Contact c, Body a, Body b, boolean corners, float sweep, float tolerance) {
+        // No points: a gap beyond the margin, and the next tick must look again or it could close
+        // unseen. A pair that can close the tolerance in one tick will not be reused next tick either.
+        if (c.pointCount == 0 || !corners || !(sweep < tolerance)) {
+            c.reusable = false;
+            return;
+        }
+        c.reusable = true;
+        float ac = a.c;
+        float as = a.s;
+        if (b != null) {
+            float dx = b.x - a.x;
+            float dy = b.y - a.y;
+            c.poseX = ac * dx + as * dy;
+            c.poseY = ac * dy - as * dx;
+            c.poseC = ac * b.c + as * b.s;
+            c.poseS = ac * b.s - as * b.c;
+            c.frameNormalX = ac * c.normalX + as * c.normalY;
+            c.frameNormalY = ac * c.normalY - as * c.normalX;
+        } else {
+            c.poseX = a.x;
+            c.poseY = a.y;
+            c.poseC = ac;
+            c.poseS = as;
+            c.frameNormalX = c.normalX;
+            c.frameNormalY = c.normalY;
+        }
+        for (int p = 0; p < c.pointCount; p++) {
+            float half = 0.5f * c.separation(p);
+            float px = c.pointX(p);
+            float py = c.pointY(p);
+            // A's surface point lies half the separation behind the midpoint along the normal, B's ahead.
+            float qx = px - half * c.normalX - a.x;
+            float qy = py - half * c.normalY - a.y;
+            float lax = ac * qx + as * qy;
+            float lay = ac * qy - as * qx;
+            float wx = px + half * c.normalX;
+            float wy = py + half * c.normalY;
+            float lbx = wx;
+            float lby = wy;
+            if (b != null) {
+                float rx = wx - b.x;
+                float ry = wy - b.y;
+                lbx = b.c * rx + b.s * ry;
+                lby = b.c * ry - b.s * rx;
+            }
+            if (p == 0) {
+                c.surfaceAX0 = lax;
+                c.surfaceAY0 = lay;
+                c.surfaceBX0 = lbx;
+                c.surfaceBY0 = lby;
+            } else {
+                c.surfaceAX1 = lax;
+                c.surfaceAY1 = lay;
+                c.surfaceBX1 = lbx;
+                c.surfaceBY1 = lby;
+            }
+        }
+    }
+
+    /**
+     * Updates the remembered points to the bodies' poses if the pair moved less than the tolerance
+     * (counting the sweep, the distance it can close this tick); otherwise leaves the contact alone.
+     *
+     * @return whether the points were reused
+     */
+    static boolean reuse(Contact c, Body a, Body b, float sweep, float tolerance) {
+        if (!c.reusable) {
+            return false;
+        }
+        float ac = a.c;
+        float as = a.s;
+        float moved;
+        float turnSin;
+        float turnCos;
+        if (b != null) {
+            float dx = b.x - a.x;
+            float dy = b.y - a.y;
+            float px = ac * dx + as * dy;
+            float py = ac * dy - as * dx;
+            float rc = ac * b.c + as * b.s;
+            float rs = ac * b.s - as * b.c;
+            turnSin = rs * c.poseC - rc * c.poseS;
+            turnCos = rc * c.poseC + rs * c.poseS;
+            moved = abs(px - c.poseX) + abs(py - c.poseY) + abs(turnSin) * b.getShape().getBoundingRadius();
+        } else {
+            turnSin = as * c.poseC - ac * c.poseS;
+            turnCos = ac * c.poseC + as * c.poseS;
+            moved = abs(a.x - c.poseX) + abs(a.y - c.poseY) + abs(turnSin) * a.getShape().getBoundingRadius();
+        }
+        // The sine bounds a point's travel for turns under a quarter; a half-turn has a small sine too.
+        if (!(moved + sweep < tolerance) || !(turnCos > 0f)) {
+            return false;
+        }
+        float nx = ac * c.frameNormalX - as * c.frameNormalY;
+        float ny = as * c.frameNormalX + ac * c.frameNormalY;
+        if (b == null) {
+            nx = c.frameNormalX;
+            ny = c.frameNormalY;
+        }
+        c.normalX = nx;
+        c.normalY = ny;
+        for (int p = 0; p < c.pointCount; p++) {
+            float lax = p == 0 ? c.surfaceAX0 : c.surfaceAX1;
+            float lay = p == 0 ? c.surfaceAY0 : c.surfaceAY1;
+            float lbx = p == 0 ? c.surfaceBX0 : c.surfaceBX1;
+            float lby = p == 0 ? c.surfaceBY0 : c.surfaceBY1;
+            float wax = a.x + ac * lax - as * lay;
+            float way = a.y + as * lax + ac * lay;
+            float wbx = lbx;
+            float wby = lby;
+            if (b != null) {
+                wbx = b.x + b.c * lbx - b.s * lby;
+                wby = b.y + b.s * lbx + b.c * lby;
+            }
+            float sep = (wbx - wax) * nx + (wby - way) * ny;
+            float mx = 0.5f * (wax + wbx);
+            float my = 0.5f * (way + wby);
+            if (p == 0) {
+                c.pointX0 = mx;
+                c.pointY0 = my;
+                c.separation0 = sep;
+            } else {
+                c.pointX1 = mx;
+                c.pointY1 = my;
+                c.separation1 = sep;
+            }
+        }
+        return true;
+    }
+
+    private static float abs(float v) {
+        return v < 0f ? -v : v;
+    }
+}
