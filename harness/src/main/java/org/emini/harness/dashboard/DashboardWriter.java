@@ -121,6 +121,8 @@ public final class DashboardWriter {
             }
         }
         data.add("replays", replays);
+        // The World Designer's page (designer/, built by ./emini designer or ./emini test) replays these too.
+        data.addProperty("designer", libraryRoot.toAbsolutePath().getParent().resolve("designer/target/page/index.html").toUri().toString());
         Files.writeString(dash.resolve("data.js"), "window.EMINI=" + data + ";\n", StandardCharsets.UTF_8);
         Path index = reports.resolve("index.html");
         try (InputStream in = DashboardWriter.class.getResourceAsStream("index.html")) {
