@@ -77,8 +77,8 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--no-plots", description = "Do not draw the plots.")
     boolean noPlots;
 
-    @Option(names = "--plot-cost", paramLabel = "wall|cpu", defaultValue = "wall",
-            description = "The plots' cost axis: wall time (default) or the ticking thread's CPU time, steadier on a busy machine.")
+    @Option(names = "--plot-cost", paramLabel = "wall|cpu", defaultValue = "cpu",
+            description = "The plots' cost axis: the ticking thread's CPU time (default; steady on a busy machine) or wall time.")
     String plotCost;
 
     @Option(names = "--progress", negatable = true,

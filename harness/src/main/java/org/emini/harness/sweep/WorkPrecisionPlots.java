@@ -57,13 +57,15 @@ public final class WorkPrecisionPlots {
         for (Map.Entry<String, List<SweepPoint>> e : byScene.entrySet()) {
             String ref = e.getValue().stream().map(SweepPoint::reference).filter(r -> !r.isEmpty()).findFirst().orElse("");
             String against = ref.startsWith("closedForm:") ? "closed form " + ref.substring(11) : "tightest setting " + ref.replace("self:", "");
-            n += plot(e.getValue(), SweepPoint::maxError, e.getKey() + ": whole-run error vs " + against,
-                    "max error over the run (px)", dir.resolve(stem(e.getKey()) + "-error"), cost, costTitle);
-            n += plot(e.getValue(), SweepPoint::finalError, e.getKey() + ": final-time error vs " + against,
-                    "error at the final time (px)", dir.resolve(stem(e.getKey()) + "-final"), cost, costTitle);
-            n += plot(e.getValue(), SweepPoint::energyDrift, e.getKey() + ": energy drift vs cost",
+            // Short titles (the scene and the figure): XChart centres a title over the plot area, beside the
+            // legend, and clips what does not fit; the reference goes on the y axis.
+            n += plot(e.getValue(), SweepPoint::maxError, e.getKey() + ": whole-run error",
+                    "max error (px) vs " + against, dir.resolve(stem(e.getKey()) + "-error"), cost, costTitle);
+            n += plot(e.getValue(), SweepPoint::finalError, e.getKey() + ": final-time error",
+                    "final error (px) vs " + against, dir.resolve(stem(e.getKey()) + "-final"), cost, costTitle);
+            n += plot(e.getValue(), SweepPoint::energyDrift, e.getKey() + ": energy drift",
                     "max |E - E0| / max KE", dir.resolve(stem(e.getKey()) + "-energy"), cost, costTitle);
-            n += plot(e.getValue(), SweepPoint::momentumDrift, e.getKey() + ": momentum drift vs cost",
+            n += plot(e.getValue(), SweepPoint::momentumDrift, e.getKey() + ": momentum drift",
                     "max |p - p0| / max |p|", dir.resolve(stem(e.getKey()) + "-momentum"), cost, costTitle);
         }
         return n;
@@ -111,6 +113,7 @@ public final class WorkPrecisionPlots {
         List<Integer> iterations = points.stream().map(SweepPoint::iterations).distinct().sorted().toList();
         XYChart chart = new XYChartBuilder().width(800).height(440).title(title)
                 .xAxisTitle(costTitle).yAxisTitle(yTitle).build();
+        chart.getStyler().setChartTitleFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.BOLD, 12));
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
