@@ -60,6 +60,10 @@ final class CompareCommand implements Callable<Integer> {
     @Mixin
     OracleOptions oracleOptions;
 
+    @Option(names = "-k", paramLabel = "PATTERN",
+            description = "Only the scenes whose id matches: a glob (closed-form/*) or a substring; repeat for several.")
+    List<String> patterns;
+
     @Option(names = "--setup-only", description = "Create or refresh the oracle's environment, then stop.")
     boolean setupOnly;
 
@@ -73,7 +77,8 @@ final class CompareCommand implements Callable<Integer> {
             System.out.println("oracle environment ready: " + interpreter);
             return 0;
         }
-        List<ScenarioLoader.Loaded> loaded = SceneBatch.load(library.loader(), scenesForTheOracle(library.files(spec, paths)));
+        List<ScenarioLoader.Loaded> loaded = SceneFilter.keep(spec, SceneBatch.load(library.loader(),
+                scenesForTheOracle(library.files(spec, paths))), patterns);
         List<Path> valid = new ArrayList<>();
         for (ScenarioLoader.Loaded l : loaded) {
             if (l.ok()) {
