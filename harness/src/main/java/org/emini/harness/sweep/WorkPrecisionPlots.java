@@ -124,15 +124,17 @@ public final class WorkPrecisionPlots {
             double[] xs = ps.stream().mapToDouble(cost).toArray();
             double[] ys = ps.stream().mapToDouble(y).toArray();
             var s = chart.addSeries(line.getKey(), xs, ys);
-            boolean oracle = !ps.get(0).engine().equals("emini");
-            s.setMarker(oracle ? SeriesMarkers.DIAMOND : SeriesMarkers.CIRCLE);
+            String engine = ps.get(0).engine();
+            boolean oracle = !engine.equals("emini");
+            // Emini circles, pymunk diamonds dashed, Box2D triangles dotted: one colour per iteration count.
+            s.setMarker(!oracle ? SeriesMarkers.CIRCLE : engine.equals("box2d") ? SeriesMarkers.TRIANGLE_UP : SeriesMarkers.DIAMOND);
             java.awt.Color c = COLOURS[iterations.indexOf(ps.get(0).iterations()) % COLOURS.length];
             s.setLineColor(c);
             s.setMarkerColor(c);
             if (oracle) {
                 // The oracle's lines dashed: the same colour is the same iteration count.
                 s.setLineStyle(new java.awt.BasicStroke(1.6f, java.awt.BasicStroke.CAP_BUTT, java.awt.BasicStroke.JOIN_MITER,
-                        10f, new float[] {6f, 4f}, 0f));
+                        10f, engine.equals("box2d") ? new float[] {2f, 3f} : new float[] {6f, 4f}, 0f));
             }
         }
         VectorGraphicsEncoder.saveVectorGraphic(chart, stem.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
