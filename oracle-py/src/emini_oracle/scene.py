@@ -35,7 +35,7 @@ METRIC_CHANNELS = {
     "sleeping": ["sleeping.count", "sleeping.fraction"],
     "jointLimits": ["jointLimits.angle", "jointLimits.translation"],
 }
-BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed")
+BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed", "displacement", "turn")
 
 
 class SceneError(Exception):
@@ -235,12 +235,16 @@ class Scene:
         elif r.bodies == "dynamic":
             out.extend(b.name for b in self.bodies if not b.state.static)
         for e in self.expect:
-            if "body" in e and e["body"] not in out:
-                out.append(e["body"])
             ch = e.get("metric", e.get("closedForm"))
             bc = body_channel(ch) if isinstance(ch, str) else None
-            if bc is not None and bc[0] not in out:
-                out.append(bc[0])
+            for name in ([e["body"]] if "body" in e else []) + ([bc[0]] if bc is not None else []):
+                # A group (* for any text) records its members in creation order, as the harness's runner.
+                members = [b.name for b in self.bodies if group_matches(name, b.name)] if "*" in name else [name]
+                out.extend(m for m in members if m not in out)
+        if any("*" in n for e in self.expect for n in _expectation_bodies(e)):
+            # With a group, every recorded body in creation order, as the harness's runner.
+            order = [b.name for b in self.bodies]
+            out.sort(key=order.index)
         return out
 
     def expanded_json(self):
@@ -252,6 +256,17 @@ class Scene:
 def java_round(x):
     """Java's Math.round: floor(x + 0.5)."""
     return int(math.floor(x + 0.5))
+
+
+def _expectation_bodies(e):
+    ch = e.get("metric", e.get("closedForm"))
+    bc = body_channel(ch) if isinstance(ch, str) else None
+    return ([e["body"]] if "body" in e else []) + ([bc[0]] if bc is not None else [])
+
+
+def group_matches(pattern, name):
+    """Whether a body name matches an expectation's group: * any text, everything else literal."""
+    return re.fullmatch(".*".join(re.escape(p) for p in pattern.split("*")), name) is not None
 
 
 def body_channel(channel):
@@ -598,10 +613,10 @@ class _Reader:
             if "stable" in e and "maxEnergyRise" in e["stable"] and "energy" not in metrics:
                 metrics["energy"] = MetricSpec("energy")
             if bodies is None:
-                if "body" in e and e["body"] not in body_names:
+                if "body" in e and e["body"] not in body_names and "*" not in e["body"]:
                     body_names.append(e["body"])
                 bc = body_channel(e.get("metric", e.get("closedForm")))
-                if bc is not None and bc[0] not in body_names:
+                if bc is not None and bc[0] not in body_names and "*" not in bc[0]:
                     body_names.append(bc[0])
         every = float(rec["every"]) if "every" in rec else math.nan
         return Record(every, list(metrics.values()), bodies, body_names, bool(rec.get("trace", True))), expect

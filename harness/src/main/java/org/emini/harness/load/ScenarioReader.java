@@ -442,11 +442,12 @@ final class ScenarioReader {
                         && !metrics.containsKey(MetricSpec.Kind.energy)) {
                     metrics.put(MetricSpec.Kind.energy, MetricSpec.plain(MetricSpec.Kind.energy, null));
                 }
-                if (e.body() != null && bodies == null && !bodyNames.contains(e.body())) {
+                // A group's members are recorded by the runner, in the order the scene creates them.
+                if (e.body() != null && bodies == null && !bodyNames.contains(e.body()) && e.group() == null) {
                     bodyNames.add(e.body());
                 }
                 String[] bc = e.channel() != null ? Channels.bodyChannel(e.channel()) : null;
-                if (bc != null && bodies == null && !bodyNames.contains(bc[0])) {
+                if (bc != null && bodies == null && !bodyNames.contains(bc[0]) && e.group() == null) {
                     bodyNames.add(bc[0]);
                 }
             }
@@ -547,18 +548,27 @@ final class ScenarioReader {
             problem(p.key("near"), "near needs a tolerance");
         }
         String body = e.has("body") ? e.get("body").asText() : null;
-        if (body != null && !names.contains(body)) {
-            problem(p.key("body"), "no body named '" + body + "'");
+        if (body != null && !known(body, names)) {
+            problem(p.key("body"), Channels.isGroup(body) ? "'" + body + "' matches no body" : "no body named '" + body + "'");
         }
+        double crossing = num(e, "crossing", Double.NaN);
+        boolean inOrder = bool(e, "inOrder", false);
         if (kind == ExpectationSpec.Kind.METRIC || kind == ExpectationSpec.Kind.CLOSED_FORM) {
             channel = e.get(k).asText();
             JsonPath cp = p.key(k);
             String[] bc = Channels.bodyChannel(channel);
             if (bc == null && Channels.metricOf(channel) == null) {
                 problem(cp, "unknown channel '" + channel + "' (see scenarios/README.md, Metrics)");
-            } else if (bc != null && !names.contains(bc[0])) {
-                problem(cp, "no body named '" + bc[0] + "'");
+            } else if (bc != null && !known(bc[0], names)) {
+                problem(cp, Channels.isGroup(bc[0]) ? "'" + bc[0] + "' matches no body" : "no body named '" + bc[0] + "'");
             }
+            if ("firstCrossing".equals(of) && Double.isNaN(crossing)) {
+                problem(p, "of: firstCrossing needs `crossing`: the value whose first crossing is timed");
+            }
+            if (inOrder && (!"firstCrossing".equals(of) || bc == null || !Channels.isGroup(bc[0]))) {
+                problem(p.key("inOrder"), "inOrder belongs to a group's firstCrossing (metric: body.NAME*.Q, of: firstCrossing)");
+            }
+            bounded = bounded || inOrder;
             if ((of == null) == Double.isNaN(at)) {
                 problem(p, "give `of` or `at`, one of them");
             }
@@ -577,8 +587,8 @@ final class ScenarioReader {
                 problem(p, "give atMost, atLeast or near with tolerance");
             }
         } else {
-            if (e.has("of") || e.has("at") || e.has("relative")) {
-                problem(p, "of, at and relative belong to metric and closedForm expectations");
+            if (e.has("of") || e.has("at") || e.has("relative") || e.has("crossing") || e.has("inOrder")) {
+                problem(p, "of, at, relative, crossing and inOrder belong to metric and closedForm expectations");
             }
         }
         double[] point = null;
@@ -607,7 +617,15 @@ final class ScenarioReader {
                 stable != null ? num(stable, "maxAngularSpeed", Double.NaN) : Double.NaN,
                 stable != null ? num(stable, "maxEnergyRise", Double.NaN) : Double.NaN,
                 e.has("name") ? e.get("name").asText() : null, e.has("why") ? e.get("why").asText() : null,
-                knownFailure(e.get("knownFailure")), p);
+                knownFailure(e.get("knownFailure")), p, crossing, inOrder);
+    }
+
+    /** Whether a body name in an expectation names a body, or as a group ({@code *}) matches at least one. */
+    private static boolean known(String name, Set<String> names) {
+        if (names.contains(name)) {
+            return true;
+        }
+        return Channels.isGroup(name) && names.stream().anyMatch(n -> Channels.matches(name, n));
     }
 
     private static MetricSpec.Kind neededMetric(ExpectationSpec e) {

@@ -194,8 +194,18 @@ public final class ScenarioRunner {
                 }
             }
         }
-        // Bodies an expectation reads are always recorded.
+        // Bodies an expectation reads are always recorded; with a group, all in creation order (inOrder reads it).
+        boolean groups = false;
         for (ExpectationSpec e : scenario.run().expect()) {
+            if (e.group() != null) {
+                groups = true;
+                for (String n : built.bodies().keySet()) {
+                    if (Channels.matches(e.group(), n)) {
+                        out.add(n);
+                    }
+                }
+                continue;
+            }
             if (e.body() != null) {
                 out.add(e.body());
             }
@@ -203,6 +213,11 @@ public final class ScenarioRunner {
             if (bc != null) {
                 out.add(bc[0]);
             }
+        }
+        if (groups) {
+            List<String> ordered = new ArrayList<>(built.bodies().keySet());
+            ordered.retainAll(out);
+            return ordered;
         }
         return new ArrayList<>(out);
     }

@@ -26,15 +26,33 @@ import org.emini.harness.load.JsonPath;
  * @param why where the bound comes from, or null
  * @param knownFailure the known-failure mark, or null
  * @param path where the expectation is written
+ * @param crossing the value whose crossings {@code firstCrossing} and {@code period} time, or NaN (period:
+ *     the window's mean)
+ * @param inOrder a group's first crossings must come in the order the scene creates its bodies
  */
 public record ExpectationSpec(Kind kind, String channel, String of, double at, boolean relative, String body,
                               double[] point, double[] max, double atMost, double atLeast, double near,
                               double tolerance, double windowFrom, double windowUntil, double maxSpeed,
                               double maxAngularSpeed, double maxEnergyRise, String name, String why,
-                              KnownFailure knownFailure, JsonPath path) {
+                              KnownFailure knownFailure, JsonPath path, double crossing, boolean inOrder) {
 
     /** Expectation kinds. */
     public enum Kind { METRIC, CLOSED_FORM, ENDS_NEAR, STAYS_INSIDE, NO_TUNNELLING, STABLE }
+
+    /** The same expectation on one member of its group: the body and the channel's body replaced. */
+    public ExpectationSpec forBody(String member) {
+        String[] bc = channel != null ? Channels.bodyChannel(channel) : null;
+        return new ExpectationSpec(kind, bc != null ? Channels.body(member, bc[1]) : channel, of, at, relative,
+                body != null ? member : null, point, max, atMost, atLeast, near, tolerance, windowFrom, windowUntil,
+                maxSpeed, maxAngularSpeed, maxEnergyRise, name, why, knownFailure, path, crossing, false);
+    }
+
+    /** The group pattern this expectation reads ({@code body: box[*]} or {@code metric: body.box[*].y}), or null. */
+    public String group() {
+        String[] bc = channel != null ? Channels.bodyChannel(channel) : null;
+        String b = bc != null ? bc[0] : body;
+        return Channels.isGroup(b) ? b : null;
+    }
 
     /** A short human description, used in reports when the scene gives no name. */
     public String describe() {

@@ -81,7 +81,7 @@ public final class SceneScaling {
     public static int lengthPower(String channel) {
         String[] body = Channels.bodyChannel(channel);
         if (body != null) {
-            return body[1].equals("angle") || body[1].equals("omega") ? 0 : 1;
+            return body[1].equals("angle") || body[1].equals("omega") || body[1].equals("turn") ? 0 : 1;
         }
         switch (channel) {
             case "energy.kinetic":
@@ -186,7 +186,8 @@ public final class SceneScaling {
         switch (e.kind()) {
             case METRIC:
             case CLOSED_FORM:
-                f = e.relative() ? 1 : Math.pow(k, lengthPower(e.channel()));
+                // Times (firstCrossing, period) do not scale; the value crossed does, as the channel.
+                f = e.relative() || isTime(e.of()) ? 1 : Math.pow(k, lengthPower(e.channel()));
                 break;
             case ENDS_NEAR:
             case STAYS_INSIDE:
@@ -199,7 +200,12 @@ public final class SceneScaling {
         return new ExpectationSpec(e.kind(), e.channel(), e.of(), e.at(), e.relative(), e.body(), times(e.point(), k),
                 times(e.max(), k), e.atMost() * f, e.atLeast() * f, e.near() * f, e.tolerance() * f, e.windowFrom(),
                 e.windowUntil(), e.maxSpeed() * k, e.maxAngularSpeed(), e.maxEnergyRise() * k * k, e.name(), e.why(),
-                e.knownFailure(), e.path());
+                e.knownFailure(), e.path(), e.crossing() * (e.channel() == null ? 1 : Math.pow(k, lengthPower(e.channel()))),
+                e.inOrder());
+    }
+
+    private static boolean isTime(String of) {
+        return "firstCrossing".equals(of) || "period".equals(of);
     }
 
     private static Section landscape(Section s, double k) {
