@@ -33,3 +33,21 @@ run:
     for run in (run_scene, box2d.run_scene):
         doc, _ = run(scene)
         assert list(doc["bodies"]) == ["drop1", "other", "drop2"]
+
+
+def test_minus_and_relative_to_record_their_bodies_and_metrics(loader):
+    scene = load(loader, """
+shapes: {ball: {type: circle, radius: 5}}
+bodies:
+  - {name: a, shape: ball, position: [0, -100]}
+  - {name: b, shape: ball, position: [20, -200]}
+  - {name: c, shape: ball, position: [40, -300]}
+run:
+  duration: 0.5
+  record: {bodies: [a]}
+  expect:
+    - {metric: body.a.y, minus: body.b.y, of: maxAbs, atMost: 1000}
+    - {metric: body.a.speed, at: 0.4, atLeast: 0.5, relativeTo: {metric: energy.kinetic, of: max}}
+""")
+    assert scene.recorded_bodies() == ["a", "b"]
+    assert "energy" in [m.kind for m in scene.record.metrics]

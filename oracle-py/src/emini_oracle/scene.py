@@ -237,7 +237,8 @@ class Scene:
         for e in self.expect:
             ch = e.get("metric", e.get("closedForm"))
             bc = body_channel(ch) if isinstance(ch, str) else None
-            for name in ([e["body"]] if "body" in e else []) + ([bc[0]] if bc is not None else []):
+            extra = [x[0] for x in map(body_channel, extra_channels(e)) if x is not None]
+            for name in ([e["body"]] if "body" in e else []) + ([bc[0]] if bc is not None else []) + extra:
                 # A group (* for any text) records its members in creation order, as the harness's runner.
                 members = [b.name for b in self.bodies if group_matches(name, b.name)] if "*" in name else [name]
                 out.extend(m for m in members if m not in out)
@@ -262,6 +263,15 @@ def _expectation_bodies(e):
     ch = e.get("metric", e.get("closedForm"))
     bc = body_channel(ch) if isinstance(ch, str) else None
     return ([e["body"]] if "body" in e else []) + ([bc[0]] if bc is not None else [])
+
+
+def extra_channels(e):
+    """The channels an expectation reads besides its own: minus and relativeTo's metric."""
+    out = [e["minus"]] if isinstance(e.get("minus"), str) else []
+    rel = e.get("relativeTo")
+    if isinstance(rel, dict) and isinstance(rel.get("metric"), str):
+        out.append(rel["metric"])
+    return out
 
 
 def group_matches(pattern, name):
@@ -612,6 +622,13 @@ class _Reader:
                 metrics[needed] = MetricSpec(needed)
             if "stable" in e and "maxEnergyRise" in e["stable"] and "energy" not in metrics:
                 metrics["energy"] = MetricSpec("energy")
+            for extra in extra_channels(e):
+                k = metric_of(extra)
+                if k is not None and k != "tunnelling" and k not in metrics:
+                    metrics[k] = MetricSpec(k)
+                xc = body_channel(extra)
+                if bodies is None and xc is not None and xc[0] not in body_names:
+                    body_names.append(xc[0])
             if bodies is None:
                 if "body" in e and e["body"] not in body_names and "*" not in e["body"]:
                     body_names.append(e["body"])

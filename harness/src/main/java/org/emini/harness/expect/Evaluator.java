@@ -31,8 +31,25 @@ public final class Evaluator {
             return verdict(e, false, Double.NaN, "no sample in the window [" + e.windowFrom() + ", " + e.windowUntil() + "] s");
         }
         switch (e.kind()) {
-            case METRIC:
-                return bounded(e, reduce(e, trace.column(e.channel()), trace, window));
+            case METRIC: {
+                double[] v = trace.column(e.channel());
+                if (e.minus() != null) {
+                    double[] m = trace.column(e.minus());
+                    for (int i = 0; i < v.length; i++) {
+                        v[i] -= m[i];
+                    }
+                }
+                double x = reduce(e, v, trace, window);
+                if (e.relativeTo() == null) {
+                    return bounded(e, x);
+                }
+                ExpectationSpec f = e.relativeTo();
+                int[] fw = window(f, trace);
+                double r = fw[0] <= fw[1] ? reduce(f, trace.column(f.channel()), trace, fw) : Double.NaN;
+                Verdict v2 = bounded(e.timesBounds(r), x);
+                return verdict(e, v2.passed() && Double.isFinite(r), x, v2.detail() + " (the bounds times " + f.channel()
+                        + " " + (f.of() != null ? f.of() : "at " + fmt(f.at()) + " s") + " = " + fmt(r) + ")");
+            }
             case CLOSED_FORM:
                 return bounded(e, closedFormError(e, trace, closedForm, window));
             case ENDS_NEAR: {

@@ -442,6 +442,17 @@ final class ScenarioReader {
                         && !metrics.containsKey(MetricSpec.Kind.energy)) {
                     metrics.put(MetricSpec.Kind.energy, MetricSpec.plain(MetricSpec.Kind.energy, null));
                 }
+                // The channels minus and relativeTo read: their metrics computed, their bodies recorded.
+                for (String extra : extraChannels(e)) {
+                    MetricSpec.Kind k = Channels.metricOf(extra);
+                    if (k != null && k != MetricSpec.Kind.tunnelling && !metrics.containsKey(k)) {
+                        metrics.put(k, MetricSpec.plain(k, null));
+                    }
+                    String[] xc = Channels.bodyChannel(extra);
+                    if (xc != null && bodies == null && !bodyNames.contains(xc[0])) {
+                        bodyNames.add(xc[0]);
+                    }
+                }
                 // A group's members are recorded by the runner, in the order the scene creates them.
                 if (e.body() != null && bodies == null && !bodyNames.contains(e.body()) && e.group() == null) {
                     bodyNames.add(e.body());
@@ -515,6 +526,11 @@ final class ScenarioReader {
     }
 
     private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm) {
+        return expectation(e, p, names, hasClosedForm, false);
+    }
+
+    /** An expectation; {@code figure}: the figure of a relativeTo, which has no bounds of its own. */
+    private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm, boolean figure) {
         List<String> kinds = new ArrayList<>();
         for (String k : List.of("metric", "closedForm", "endsNear", "staysInside", "noTunnelling", "stable")) {
             if (e.has(k)) {
@@ -537,6 +553,8 @@ final class ScenarioReader {
             default -> ExpectationSpec.Kind.STABLE;
         };
         String channel = null;
+        String minus = null;
+        ExpectationSpec relativeTo = null;
         String of = e.has("of") ? e.get("of").asText() : null;
         double at = num(e, "at", Double.NaN);
         double atMost = num(e, "atMost", Double.NaN);
@@ -569,6 +587,21 @@ final class ScenarioReader {
                 problem(p.key("inOrder"), "inOrder belongs to a group's firstCrossing (metric: body.NAME*.Q, of: firstCrossing)");
             }
             bounded = bounded || inOrder;
+            if (e.has("minus")) {
+                minus = e.get("minus").asText();
+                String[] mc = Channels.bodyChannel(minus);
+                if (mc == null && Channels.metricOf(minus) == null) {
+                    problem(p.key("minus"), "unknown channel '" + minus + "' (see scenarios/README.md, Metrics)");
+                } else if (mc != null && !names.contains(mc[0])) {
+                    problem(p.key("minus"), "no body named '" + mc[0] + "' (minus takes one channel, not a group)");
+                }
+            }
+            if (e.has("relativeTo")) {
+                relativeTo = expectation(e.get("relativeTo"), p.key("relativeTo"), names, hasClosedForm, true);
+                if (relativeTo != null && (relativeTo.kind() != ExpectationSpec.Kind.METRIC || relativeTo.group() != null)) {
+                    problem(p.key("relativeTo"), "relativeTo is a figure of one channel: {metric: CHANNEL, of: R} or {metric: CHANNEL, at: T}");
+                }
+            }
             if ((of == null) == Double.isNaN(at)) {
                 problem(p, "give `of` or `at`, one of them");
             }
@@ -583,12 +616,16 @@ final class ScenarioReader {
             } else if (errorOf) {
                 problem(p.key("of"), of + " compares with the closed form: use `closedForm:` instead of `metric:`");
             }
-            if (!bounded) {
+            if (!bounded && !figure) {
                 problem(p, "give atMost, atLeast or near with tolerance");
             }
+            if (bounded && figure) {
+                problem(p, "relativeTo is a figure: its bounds belong to the expectation");
+            }
         } else {
-            if (e.has("of") || e.has("at") || e.has("relative") || e.has("crossing") || e.has("inOrder")) {
-                problem(p, "of, at, relative, crossing and inOrder belong to metric and closedForm expectations");
+            if (e.has("of") || e.has("at") || e.has("relative") || e.has("crossing") || e.has("inOrder")
+                    || e.has("minus") || e.has("relativeTo")) {
+                problem(p, "of, at, relative, crossing, inOrder, minus and relativeTo belong to metric and closedForm expectations");
             }
         }
         double[] point = null;
@@ -617,7 +654,19 @@ final class ScenarioReader {
                 stable != null ? num(stable, "maxAngularSpeed", Double.NaN) : Double.NaN,
                 stable != null ? num(stable, "maxEnergyRise", Double.NaN) : Double.NaN,
                 e.has("name") ? e.get("name").asText() : null, e.has("why") ? e.get("why").asText() : null,
-                knownFailure(e.get("knownFailure")), p, crossing, inOrder);
+                knownFailure(e.get("knownFailure")), p, crossing, inOrder, minus, relativeTo);
+    }
+
+    /** The channels an expectation reads besides its own: {@code minus} and {@code relativeTo}'s. */
+    static List<String> extraChannels(ExpectationSpec e) {
+        List<String> out = new ArrayList<>();
+        if (e.minus() != null) {
+            out.add(e.minus());
+        }
+        if (e.relativeTo() != null && e.relativeTo().channel() != null) {
+            out.add(e.relativeTo().channel());
+        }
+        return out;
     }
 
     /** Whether a body name in an expectation names a body, or as a group ({@code *}) matches at least one. */

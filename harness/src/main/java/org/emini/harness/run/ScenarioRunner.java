@@ -213,6 +213,12 @@ public final class ScenarioRunner {
             if (bc != null) {
                 out.add(bc[0]);
             }
+            for (String extra : new String[] {e.minus(), e.relativeTo() != null ? e.relativeTo().channel() : null}) {
+                String[] xc = extra != null ? Channels.bodyChannel(extra) : null;
+                if (xc != null) {
+                    out.add(xc[0]);
+                }
+            }
         }
         if (groups) {
             List<String> ordered = new ArrayList<>(built.bodies().keySet());

@@ -187,7 +187,7 @@ public final class SceneScaling {
             case METRIC:
             case CLOSED_FORM:
                 // Times (firstCrossing, period) do not scale; the value crossed does, as the channel.
-                f = e.relative() || isTime(e.of()) ? 1 : Math.pow(k, lengthPower(e.channel()));
+                f = e.relative() || isTime(e.of()) || e.relativeTo() != null ? 1 : Math.pow(k, lengthPower(e.channel()));
                 break;
             case ENDS_NEAR:
             case STAYS_INSIDE:
@@ -201,7 +201,7 @@ public final class SceneScaling {
                 times(e.max(), k), e.atMost() * f, e.atLeast() * f, e.near() * f, e.tolerance() * f, e.windowFrom(),
                 e.windowUntil(), e.maxSpeed() * k, e.maxAngularSpeed(), e.maxEnergyRise() * k * k, e.name(), e.why(),
                 e.knownFailure(), e.path(), e.crossing() * (e.channel() == null ? 1 : Math.pow(k, lengthPower(e.channel()))),
-                e.inOrder());
+                e.inOrder(), e.minus(), e.relativeTo());
     }
 
     private static boolean isTime(String of) {

@@ -101,6 +101,25 @@ class SceneLanguageTest {
     }
 
     @Test
+    void oneChannelAgainstAnotherAndBoundsRelativeToAMeasuredFigure() {
+        // drop1 and drop2 fall side by side 100 px apart: y2 - y1 stays -100 exactly while both fall freely.
+        SceneResult r = run(DROPS,
+                "    - {metric: body.drop2.y, minus: body.drop1.y, of: maxAbs, near: 100, tolerance: 0.01}",
+                // At 2 s drop3 moves at g t = 200 px/s: at least 95% of that is 190 px/s, measured 200.
+                "    - {metric: body.drop3.speed, at: 2, atLeast: 0.95, relativeTo: {metric: body.drop3.speed, at: 2}}",
+                // Its speed at 1 s is half of that at 2 s: not at least 95% of it.
+                "    - {metric: body.drop3.speed, at: 1, atLeast: 0.95, relativeTo: {metric: body.drop3.speed, at: 2}}");
+        assertTrue(r.verdicts().get(0).passed(), r.verdicts().get(0).detail());
+        assertTrue(r.verdicts().get(1).passed(), r.verdicts().get(1).detail());
+        assertFalse(r.verdicts().get(2).passed());
+        assertTrue(r.verdicts().get(2).detail().contains("≥ 190") && r.verdicts().get(2).detail().contains("= 200"),
+                r.verdicts().get(2).detail());
+        ScenarioLoader.Loaded l = Scenes.load("bad.yaml", DROPS,
+                "    - {metric: body.drop1.y, minus: body.nobody.y, of: max, atMost: 1}");
+        assertEquals("no body named 'nobody' (minus takes one channel, not a group)", Scenes.onlyProblem(l).message());
+    }
+
+    @Test
     void aGroupThatMatchesNothingAndTimingWithoutItsValueAreLocatedProblems() {
         ScenarioLoader.Loaded l = Scenes.load("bad.yaml", DROPS, "    - {metric: 'body.nothing*.y', of: max, atMost: 1}");
         assertEquals("'nothing*' matches no body", Scenes.onlyProblem(l).message());
