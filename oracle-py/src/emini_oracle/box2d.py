@@ -18,8 +18,8 @@ import math
 
 from . import metrics as metric_classes
 from .build import LANDSCAPE_BIT, Built, Note, UnsupportedScene, _local_anchors, build, flatten
-from .run import Trace
-from .scene import Scene, java_round
+from .run import Schedule, Trace
+from .scene import Scene
 
 PX_PER_METRE = 20.0
 S = 1.0 / PX_PER_METRE
@@ -347,7 +347,7 @@ def run_scene(scene: Scene, ticks=None, timing=None):
     names = scene.recorded_bodies()
     recorded = [(built.bodies[n], w.bodies[n]) for n in names]
     trace = Trace(scene, names, channels)
-    entries = _schedule(scene)
+    entries = _schedule(w)
     every = scene.sampling_ticks
     monitors = [m for m in metrics if type(m).after_tick is not metric_classes.Metric.after_tick]
 
@@ -391,8 +391,7 @@ def time_steps(scene: Scene):
     import gc
     import time
     w = World2(scene)
-    h = scene.world.timestep
-    entries = _schedule(scene)
+    entries = _schedule(w)
     collecting = gc.isenabled()
     gc.disable()
     try:
@@ -408,16 +407,9 @@ def time_steps(scene: Scene):
             gc.enable()
 
 
-def _schedule(scene: Scene):
-    """(first tick, end tick, action) as run.Schedule times them."""
-    h = scene.world.timestep
-    out = []
-    for a in scene.actions:
-        start = int(math.ceil(a.at / h - 1e-9))
-        lasting = a.kind in ("force", "torque")
-        n = (1 if math.isnan(a.duration) else max(1, java_round(a.duration / h))) if lasting else 1
-        out.append((start, start + n, a))
-    return out
+def _schedule(w: World2):
+    """(first tick, end tick, action) as run.Schedule times them for pymunk (from the mirror)."""
+    return Schedule(w.mirror).entries
 
 
 __all__ = ["run_scene", "time_steps", "World2", "versions", "UnsupportedScene"]
