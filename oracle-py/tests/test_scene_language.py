@@ -51,3 +51,15 @@ run:
 """)
     assert scene.recorded_bodies() == ["a", "b"]
     assert "energy" in [m.kind for m in scene.record.metrics]
+
+
+def test_whole_shape_tunnelling_counts_a_rods_tip_once_in_both_oracles(loader):
+    def count(points):
+        scene = load(loader, """
+world: {gravity: [0, 0], ticksPerSecond: 60}
+bodies: [{name: rod, shape: {type: rectangle, width: 40, height: 4}, position: [-30, 0], velocity: [250, 0]}]
+run: {duration: 0.1, record: {metrics: [{tunnelling: {walls: [{from: [0, -100], to: [0, 100]}]%s}}]}}
+""" % points)
+        return [run(scene)[0]["metrics"]["tunnelling.count"][-1] for run in (run_scene, box2d.run_scene)]
+    assert count("") == [0, 0]
+    assert count(", points: shape") == [1, 1]

@@ -168,6 +168,7 @@ class MetricSpec:
     about: tuple = (0.0, 0.0)
     walls: list = field(default_factory=list)  # str (body name) or ((x, y), (x, y))
     bodies: list = field(default_factory=list)
+    whole_shape: bool = False  # tunnelling points: shape (every vertex watched, not only the centre)
 
     def channels(self):
         return METRIC_CHANNELS[self.kind]
@@ -654,7 +655,7 @@ class _Reader:
         for i, n in enumerate(bodies):
             if n not in names:
                 self.problem(f"{path}.{kind}.bodies[{i}]", f"no body named '{n}'")
-        return MetricSpec(kind, _vec(o.get("about")), walls, bodies)
+        return MetricSpec(kind, _vec(o.get("about")), walls, bodies, o.get("points", "centre") == "shape")
 
     def check_body_refs(self, node, path, names):
         if isinstance(node, list):

@@ -522,7 +522,8 @@ final class ScenarioReader {
         if (region != null && (max[0] < min[0] || max[1] < min[1])) {
             problem(op.key("region"), "region max must not be below min");
         }
-        return new MetricSpec(kind, about[0], about[1], walls, bodies, emitters, min, max, p);
+        return new MetricSpec(kind, about[0], about[1], walls, bodies, emitters, min, max, p,
+                "shape".equals(o.path("points").asText("centre")));
     }
 
     private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm) {

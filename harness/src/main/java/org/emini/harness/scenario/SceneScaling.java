@@ -170,7 +170,7 @@ public final class SceneScaling {
                 walls.add(new MetricSpec.WallSpec(w.body(), times(w.from(), k), times(w.to(), k)));
             }
             metrics.add(new MetricSpec(m.kind(), m.aboutX() * k, m.aboutY() * k, walls, m.bodies(), m.emitters(),
-                    times(m.regionMin(), k), times(m.regionMax(), k), m.path()));
+                    times(m.regionMin(), k), times(m.regionMax(), k), m.path(), m.wholeShape()));
         }
         RecordSpec rec = r.record();
         List<ExpectationSpec> expect = new ArrayList<>();
