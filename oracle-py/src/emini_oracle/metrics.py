@@ -261,12 +261,26 @@ class Tunnelling(Metric):
                     watched.remove(w)
             else:
                 self.walls.append((None, w))
-        # Watched bodies by index in the snapshot (a static body never moves: its own position).
-        self.watched = [snapshot.index.get(n, built.bodies[n]) for n in watched]
+        # Watched bodies by index in the snapshot (a static body never moves: its own position). With
+        # points: shape, each body's polygon vertices (and off-centre circle centres) too, as (body, local point).
+        self.watched = []
+        self.owner = []
+        for n in watched:
+            self.watched.append(snapshot.index.get(n, built.bodies[n]))
+            self.owner.append(n)
+            if spec.whole_shape:
+                for piece in flatten(built.specs[n].shape):
+                    points = piece[1] if piece[0] == "poly" else ([piece[1]] if tuple(piece[1]) != (0.0, 0.0) else [])
+                    for v in points:
+                        self.watched.append((built.bodies[n], tuple(v)))
+                        self.owner.append(n)
         self.previous = [[self.position(w, None) for w in self.watched] for _ in self.walls]
         self.count = 0
 
     def position(self, w, states):
+        if isinstance(w, tuple):
+            p = w[0].local_to_world(w[1])
+            return p.x, p.y
         if isinstance(w, int):
             st = states[w] if states is not None else _read(self.snap.bodies[w])
             return st[0], st[1]
@@ -281,11 +295,13 @@ class Tunnelling(Metric):
                 ax, ay = body.local_to_world(line[0])
                 bx, by = body.local_to_world(line[1])
             prev = self.previous[k]
+            counted = None  # one count per body and tick, however many of its points crossed
             for i, w in enumerate(self.watched):
                 x, y = self.position(w, states)
                 px, py = prev[i]
-                if crosses(px, py, x, y, ax, ay, bx, by):
+                if crosses(px, py, x, y, ax, ay, bx, by) and counted != self.owner[i]:
                     self.count += 1
+                    counted = self.owner[i]
                 if _side(ax, ay, bx, by, x, y) != 0:
                     prev[i] = (x, y)
 

@@ -268,7 +268,17 @@ class _AreaWatch:
             note.reason += f"; body {self.left_at[0]} was outside at t = {self.left_at[1]:g} s"
 
 
-def run_file(loader, file, out_dir: Path):
+def engine_functions(engine: str):
+    """(run_scene, time_steps) of an oracle engine: pymunk (this module) or box2d (box2d.py)."""
+    if engine == "box2d":
+        from . import box2d
+        return box2d.run_scene, box2d.time_steps
+    if engine != "pymunk":
+        raise ValueError(f"unknown oracle engine {engine!r}: pymunk or box2d")
+    return run_scene, time_steps
+
+
+def run_file(loader, file, out_dir: Path, engine: str = "pymunk"):
     """Runs one scene file; returns its entry for oracle-results.json (never raises for a scene problem)."""
     from .scene import SceneError
     t0 = time.perf_counter()
@@ -285,11 +295,11 @@ def run_file(loader, file, out_dir: Path):
         entry.update(status="skipped", message=skip)
         return entry
     try:
-        doc, built = run_scene(scene)
+        doc, built = engine_functions(engine)[0](scene)
     except UnsupportedScene as e:
         entry.update(status="unsupported", message=str(e))
         return entry
-    except Exception as e:  # a bug of the oracle or pymunk: reported, not hidden
+    except Exception as e:  # a bug of the oracle or its engine: reported, not hidden
         entry.update(status="error", message=f"{type(e).__name__}: {e}")
         return entry
     entry["unsupported"] = doc["unsupported"]
@@ -304,4 +314,4 @@ def run_file(loader, file, out_dir: Path):
     return entry
 
 
-__all__ = ["run_scene", "run_file", "time_steps", "Note"]
+__all__ = ["run_scene", "run_file", "time_steps", "engine_functions", "Note"]

@@ -35,7 +35,7 @@ METRIC_CHANNELS = {
     "sleeping": ["sleeping.count", "sleeping.fraction"],
     "jointLimits": ["jointLimits.angle", "jointLimits.translation"],
 }
-BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed")
+BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed", "displacement", "turn")
 
 
 class SceneError(Exception):
@@ -168,6 +168,7 @@ class MetricSpec:
     about: tuple = (0.0, 0.0)
     walls: list = field(default_factory=list)  # str (body name) or ((x, y), (x, y))
     bodies: list = field(default_factory=list)
+    whole_shape: bool = False  # tunnelling points: shape (every vertex watched, not only the centre)
 
     def channels(self):
         return METRIC_CHANNELS[self.kind]
@@ -235,12 +236,17 @@ class Scene:
         elif r.bodies == "dynamic":
             out.extend(b.name for b in self.bodies if not b.state.static)
         for e in self.expect:
-            if "body" in e and e["body"] not in out:
-                out.append(e["body"])
             ch = e.get("metric", e.get("closedForm"))
             bc = body_channel(ch) if isinstance(ch, str) else None
-            if bc is not None and bc[0] not in out:
-                out.append(bc[0])
+            extra = [x[0] for x in map(body_channel, extra_channels(e)) if x is not None]
+            for name in ([e["body"]] if "body" in e else []) + ([bc[0]] if bc is not None else []) + extra:
+                # A group (* for any text) records its members in creation order, as the harness's runner.
+                members = [b.name for b in self.bodies if group_matches(name, b.name)] if "*" in name else [name]
+                out.extend(m for m in members if m not in out)
+        if any("*" in n for e in self.expect for n in _expectation_bodies(e)):
+            # With a group, every recorded body in creation order, as the harness's runner.
+            order = [b.name for b in self.bodies]
+            out.sort(key=order.index)
         return out
 
     def expanded_json(self):
@@ -252,6 +258,26 @@ class Scene:
 def java_round(x):
     """Java's Math.round: floor(x + 0.5)."""
     return int(math.floor(x + 0.5))
+
+
+def _expectation_bodies(e):
+    ch = e.get("metric", e.get("closedForm"))
+    bc = body_channel(ch) if isinstance(ch, str) else None
+    return ([e["body"]] if "body" in e else []) + ([bc[0]] if bc is not None else [])
+
+
+def extra_channels(e):
+    """The channels an expectation reads besides its own: minus and relativeTo's metric."""
+    out = [e["minus"]] if isinstance(e.get("minus"), str) else []
+    rel = e.get("relativeTo")
+    if isinstance(rel, dict) and isinstance(rel.get("metric"), str):
+        out.append(rel["metric"])
+    return out
+
+
+def group_matches(pattern, name):
+    """Whether a body name matches an expectation's group: * any text, everything else literal."""
+    return re.fullmatch(".*".join(re.escape(p) for p in pattern.split("*")), name) is not None
 
 
 def body_channel(channel):
@@ -597,11 +623,18 @@ class _Reader:
                 metrics[needed] = MetricSpec(needed)
             if "stable" in e and "maxEnergyRise" in e["stable"] and "energy" not in metrics:
                 metrics["energy"] = MetricSpec("energy")
+            for extra in extra_channels(e):
+                k = metric_of(extra)
+                if k is not None and k != "tunnelling" and k not in metrics:
+                    metrics[k] = MetricSpec(k)
+                xc = body_channel(extra)
+                if bodies is None and xc is not None and xc[0] not in body_names:
+                    body_names.append(xc[0])
             if bodies is None:
-                if "body" in e and e["body"] not in body_names:
+                if "body" in e and e["body"] not in body_names and "*" not in e["body"]:
                     body_names.append(e["body"])
                 bc = body_channel(e.get("metric", e.get("closedForm")))
-                if bc is not None and bc[0] not in body_names:
+                if bc is not None and bc[0] not in body_names and "*" not in bc[0]:
                     body_names.append(bc[0])
         every = float(rec["every"]) if "every" in rec else math.nan
         return Record(every, list(metrics.values()), bodies, body_names, bool(rec.get("trace", True))), expect
@@ -622,7 +655,7 @@ class _Reader:
         for i, n in enumerate(bodies):
             if n not in names:
                 self.problem(f"{path}.{kind}.bodies[{i}]", f"no body named '{n}'")
-        return MetricSpec(kind, _vec(o.get("about")), walls, bodies)
+        return MetricSpec(kind, _vec(o.get("about")), walls, bodies, o.get("points", "centre") == "shape")
 
     def check_body_refs(self, node, path, names):
         if isinstance(node, list):

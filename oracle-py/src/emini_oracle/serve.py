@@ -58,7 +58,7 @@ MIN_REPEAT_SECONDS = 0.02
 MAX_RUNS_PER_REPEAT = 1024
 
 
-def best_time(scene, repeats):
+def best_time(scene, repeats, time_steps=time_steps):
     """Best time of the scene's ticks over `repeats` repeats, each of as many runs n as make it last
     MIN_REPEAT_SECONDS of wall time (n doubles from 1; the runs that find n are warm-up, the last of
     them is the first repeat), divided by n. Returns (wall seconds per run, CPU seconds per run, n);
@@ -87,8 +87,11 @@ def best_time(scene, repeats):
     return best_wall, best_cpu, n
 
 
-def run_variant(loader, request):
-    """Runs one request (a dict as above); returns the response dict. Never raises for a scene problem."""
+def run_variant(loader, request, engine="pymunk"):
+    """Runs one request (a dict as above) in pymunk or Box2D; returns the response dict. Never raises for
+    a scene problem."""
+    from .run import engine_functions
+    run_scene, time_steps = engine_functions(engine)
     scene_id = str(request.get("scene") or "variant")
     repeats = max(0, int(request.get("repeats", 1)))
     out = {"id": request.get("id"), "scene": scene_id, "status": "ok", "message": "", "unsupported": [],
@@ -105,13 +108,13 @@ def run_variant(loader, request):
     out["simulatedSeconds"] = scene.ticks * scene.world.timestep
     skip = (scene.oracle or {}).get("skip")
     if skip:
-        out.update(status="unsupported", message=f"the scene says pymunk cannot run it: {skip}")
+        out.update(status="unsupported", message=f"the scene says the oracle cannot run it: {skip}")
         return out
     try:
         timing = {}
         doc, _built = run_scene(scene, timing=timing)
         moving = [n for n in doc["unsupported"] if n["affectsBodies"]]
-        best_steps, best_cpu, runs = best_time(scene, repeats) if not moving else (math.inf, math.inf, 0)
+        best_steps, best_cpu, runs = best_time(scene, repeats, time_steps) if not moving else (math.inf, math.inf, 0)
     except UnsupportedScene as e:
         out.update(status="unsupported", message=str(e))
         return out
@@ -121,7 +124,7 @@ def run_variant(loader, request):
     out["unsupported"] = doc["unsupported"]
     out["approximations"] = doc["approximations"]
     if moving:
-        out.update(status="unsupported", message="pymunk cannot express " + "; ".join(
+        out.update(status="unsupported", message=f"{engine} cannot express " + "; ".join(
             f"{n['element']} ({n['path']}): {n['reason']}" for n in moving))
         return out
     out["stepSeconds"] = best_steps if math.isfinite(best_steps) else None
@@ -132,15 +135,19 @@ def run_variant(loader, request):
     return out
 
 
-def serve(loader, stdin=None, stdout=None):
+def serve(loader, stdin=None, stdout=None, engine="pymunk"):
     """Answers requests until stdin ends. Anything else printed while running goes to stderr, so the
     protocol stream carries only responses."""
     stdin = stdin or sys.stdin
     stdout = stdout or sys.stdout
     real_stdout, sys.stdout = sys.stdout, sys.stderr
     try:
-        _send(stdout, {"ready": True, "protocol": PROTOCOL, "pymunk": pymunk.version,
-                       "chipmunk": pymunk.chipmunk_version})
+        ready = {"ready": True, "protocol": PROTOCOL, "engine": engine, "pymunk": pymunk.version,
+                 "chipmunk": pymunk.chipmunk_version}
+        if engine == "box2d":
+            from .box2d import versions
+            ready.update(versions())
+        _send(stdout, ready)
         for line in stdin:
             if not line.strip():
                 continue
@@ -150,7 +157,7 @@ def serve(loader, stdin=None, stdout=None):
                 _send(stdout, {"id": None, "status": "error", "message": f"not a JSON request: {e}"})
                 continue
             t0 = time.perf_counter()
-            response = run_variant(loader, request)
+            response = run_variant(loader, request, engine)
             response["seconds"] = round(time.perf_counter() - t0, 4)
             _send(stdout, response)
     finally:

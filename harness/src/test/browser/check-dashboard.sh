@@ -4,7 +4,8 @@
 # unless the page reports no script errors, every section filled, the plots loaded and the replay
 # moving (and, with EMINI_REQUIRE_ORACLE set, the oracle's points and maps present; with
 # EMINI_REQUIRE_BENCH set, the benchmark's table in the Speed section; with EMINI_REQUIRE_SLEEPING set,
-# sleeping bodies drawn in a replay and the run with sleeping on summarised). Installs Debian's
+# sleeping bodies drawn in a replay and the run with sleeping on summarised; with EMINI_REQUIRE_DETAILS set,
+# the comparison's summary table, a yellow bounded-energy cell and a landscape drawn). Installs Debian's
 # chromium first when /usr/bin/chromium is missing.
 #   harness/src/test/browser/check-dashboard.sh REPORTS [SCREENSHOT.png]
 set -euo pipefail
@@ -52,6 +53,24 @@ if [ -n "${EMINI_REQUIRE_SLEEPING:-}" ]; then
   case "$result" in
     *'"sleepingReplays":0'*|*'"sleepingSummary":false'*)
       echo "check-dashboard: FAILED: no sleeping replay or no summary of the run with sleeping on" >&2; exit 1 ;;
+  esac
+fi
+# With EMINI_REQUIRE_DETAILS set (./emini test: the smoke reports hold a comparison, a stability map with a
+# bounded energy error and a scene with a landscape): the comparison's closer-to-the-truth table and
+# filter, a bounded-energy cell painted yellow (#ffe08a) and a landscape segment drawn on the replay's canvas.
+if [ -n "${EMINI_REQUIRE_DETAILS:-}" ]; then
+  case "$result" in
+    *'"closerRows":'[2-9]*|*'"closerRows":'[1-9][0-9]*) ;;
+    *) echo "check-dashboard: FAILED: no closer-to-the-truth table in the comparison" >&2; exit 1 ;;
+  esac
+  case "$result" in
+    *'"energyErrorColour":"rgb(255, 224, 138)"'*) ;;
+    *) echo "check-dashboard: FAILED: no bounded-energy cell painted yellow in the stability maps" >&2; exit 1 ;;
+  esac
+  case "$result" in
+    *'"landscapeReplays":0'*|*'"landscapePixels":0'*) echo "check-dashboard: FAILED: no landscape segment drawn in a replay" >&2; exit 1 ;;
+    *'"landscapePixels":'*) ;;
+    *) echo "check-dashboard: FAILED: no replay with a landscape" >&2; exit 1 ;;
   esac
 fi
 case "$result" in

@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -13,9 +14,9 @@ import org.emini.harness.closedform.ClosedForms;
 import org.emini.harness.load.Limits;
 import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
-import org.emini.harness.oracle.CompareReport;
 import org.emini.harness.oracle.CompareStatus;
 import org.emini.harness.oracle.Comparison;
+import org.emini.harness.oracle.MultiComparison;
 import org.emini.harness.oracle.OracleEnvironment;
 import org.emini.harness.oracle.OracleRunner;
 import org.emini.harness.oracle.OracleScene;
@@ -60,6 +61,14 @@ final class CompareCommand implements Callable<Integer> {
     @Mixin
     OracleOptions oracleOptions;
 
+    @Option(names = "--oracle", paramLabel = "NAME,...", split = ",", defaultValue = "pymunk,box2d",
+            description = "The oracles: pymunk (Chipmunk 2D) and box2d (Box2D v3.1.1) (default: ${DEFAULT-VALUE}).")
+    List<String> oracles;
+
+    @Option(names = "-k", paramLabel = "PATTERN",
+            description = "Only the scenes whose id matches: a glob (closed-form/*) or a substring; repeat for several.")
+    List<String> patterns;
+
     @Option(names = "--setup-only", description = "Create or refresh the oracle's environment, then stop.")
     boolean setupOnly;
 
@@ -73,7 +82,8 @@ final class CompareCommand implements Callable<Integer> {
             System.out.println("oracle environment ready: " + interpreter);
             return 0;
         }
-        List<ScenarioLoader.Loaded> loaded = SceneBatch.load(library.loader(), scenesForTheOracle(library.files(spec, paths)));
+        List<ScenarioLoader.Loaded> loaded = SceneFilter.keep(spec, SceneBatch.load(library.loader(),
+                scenesForTheOracle(library.files(spec, paths))), patterns);
         List<Path> valid = new ArrayList<>();
         for (ScenarioLoader.Loaded l : loaded) {
             if (l.ok()) {
@@ -81,64 +91,94 @@ final class CompareCommand implements Callable<Integer> {
             }
         }
         int threads = jobs != null ? Options.atLeast(spec, "--jobs", jobs, 1) : Runtime.getRuntime().availableProcessors();
-        Path oracleTraces = reports.resolve("traces").resolve("pymunk");
+        for (String o : oracles) {
+            Options.require(spec, OracleOptions.ENGINES.contains(o), "--oracle: unknown oracle " + o + " (pymunk, box2d)");
+        }
         Path engineTraces = reports.resolve("traces").resolve("emini");
-        OracleRunner.Run oracleRun = valid.isEmpty() ? null
-            : new OracleRunner(interpreter, library.schemaFile()).start(valid, oracleTraces, threads);
-
-        // The engine runs while the oracle does.
+        // Every oracle runs in a process of its own while the engine runs the same scenes.
+        Map<String, OracleRunner.Run> runs = new LinkedHashMap<>();
+        for (String o : oracles) {
+            runs.put(o, valid.isEmpty() ? null : new OracleRunner(interpreter, library.schemaFile())
+                    .start(valid, reports.resolve("traces").resolve(o), threads, o));
+        }
         try (SceneBatch engine = new SceneBatch(loaded, threads,
                 new SceneBatch.Settings(engineTraces, true, true, Limits.SCENE_SECONDS, n -> { }))) {
-            Map<Path, OracleScene> oracle = oracleRun == null ? Map.of() : oracleRun.await();
-            List<Comparison.Scene> scenes = new ArrayList<>();
+            Map<String, Map<Path, OracleScene>> said = new LinkedHashMap<>();
+            for (Map.Entry<String, OracleRunner.Run> r : runs.entrySet()) {
+                said.put(r.getKey(), r.getValue() == null ? Map.of() : r.getValue().await());
+            }
+            List<MultiComparison.Scene> scenes = new ArrayList<>();
             int width = 10;
             for (ScenarioLoader.Loaded l : loaded) {
                 width = Math.max(width, l.ok() ? l.scenario().name().length() : l.file().toString().length());
             }
             for (ScenarioLoader.Loaded l : loaded) {
-                Comparison.Scene c;
-                if (!l.ok()) {
-                    c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, CompareStatus.ERROR,
-                            "invalid scene: " + l.problems(), Status.ERROR.label(), null, OracleSettings.DEFAULT, null,
-                            List.of());
-                } else {
-                    SceneResult r = engine.result(l);
-                    OracleScene o = oracle.get(l.file().toAbsolutePath().normalize());
-                    Trace oracleTrace = o != null && o.ok() ? TraceReader.read(Path.of(o.trace())).trace() : null;
-                    c = Comparison.compare(l.scenario(), r.status().label() + (r.message().isEmpty() ? "" : ": "
-                            + r.message()), r.trace(), o, oracleTrace, ClosedForms.of(l.scenario()));
+                Map<String, Comparison.Scene> byOracle = new LinkedHashMap<>();
+                for (String o : oracles) {
+                    Comparison.Scene c;
+                    if (!l.ok()) {
+                        c = new Comparison.Scene(l.file().toString(), l.file().toString(), null, CompareStatus.ERROR,
+                                "invalid scene: " + l.problems(), Status.ERROR.label(), null, OracleSettings.DEFAULT, null,
+                                List.of());
+                    } else {
+                        SceneResult r = engine.result(l);
+                        OracleScene os = said.get(o).get(l.file().toAbsolutePath().normalize());
+                        Trace oracleTrace = os != null && os.ok() ? TraceReader.read(Path.of(os.trace())).trace() : null;
+                        c = Comparison.compare(l.scenario(), r.status().label() + (r.message().isEmpty() ? "" : ": "
+                                + r.message()), r.trace(), os, oracleTrace, ClosedForms.of(l.scenario()), o);
+                    }
+                    byOracle.put(o, c);
                 }
-                scenes.add(c);
-                System.out.println(line(c, width));
+                MultiComparison.Scene m = MultiComparison.merge(byOracle);
+                scenes.add(m);
+                System.out.println(line(m, width));
             }
-            CompareReport.Summary summary = CompareReport.Summary.of(scenes, (System.nanoTime() - start) / 1e9);
+            MultiComparison.Summary summary = MultiComparison.Summary.of(scenes, oracles, (System.nanoTime() - start) / 1e9);
             System.out.println(summary);
             String command = "./emini harness " + String.join(" ", spec.commandLine().getParseResult().originalArgs());
-            CompareReport.write(reports, scenes, summary, command, pymunkVersion(oracleHome));
+            MultiComparison.write(reports, scenes, summary, command, oracles, versions(oracleHome, oracles));
             System.out.println("report: " + reports.resolve("summary.md") + ", " + reports.resolve("compare.json"));
             return summary.failed() ? 1 : 0;
         }
     }
 
-    private static String pymunkVersion(Path oracleHome) {
+    /** The oracles' versions as pinned in oracle-py/requirements.txt. */
+    private static String versions(Path oracleHome, List<String> oracles) {
+        List<String> out = new ArrayList<>();
+        for (String o : oracles) {
+            out.add(o.equals("box2d") ? "Box2D 3.1.1 (" + pinned(oracleHome, "pyb2d3") + ")" : pinned(oracleHome, "pymunk"));
+        }
+        return String.join(", ", out);
+    }
+
+    private static String pinned(Path oracleHome, String name) {
         try {
             for (String line : Files.readAllLines(oracleHome.resolve("requirements.txt"), StandardCharsets.UTF_8)) {
-                if (line.startsWith("pymunk==")) {
-                    return "pymunk " + line.substring("pymunk==".length()).trim();
+                if (line.startsWith(name + "==")) {
+                    return name + " " + line.substring(name.length() + 2).trim();
                 }
             }
         } catch (IOException e) {
             // fall through
         }
-        return "pymunk";
+        return name;
     }
 
-    private static String line(Comparison.Scene c, int width) {
-        CompareReport.Summary n = CompareReport.Summary.of(List.of(c), 0);
-        String counts = String.format(Locale.ROOT, "%3d rows: %2d agree %2d differ; closer: engine %d, pymunk %d, tie %d",
-                c.rows().size(), n.agree(), n.differ(), n.engineCloser(), n.oracleCloser(), n.ties());
-        String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", c.status().label(), c.scene(), counts);
-        return c.note().isEmpty() ? line : line + "  [" + c.note() + "]";
+    private static String line(MultiComparison.Scene m, int width) {
+        MultiComparison.Summary n = MultiComparison.Summary.of(List.of(m), List.copyOf(m.byOracle().keySet()), 0);
+        StringBuilder counts = new StringBuilder(String.format(Locale.ROOT, "%3d rows:", m.rows().size()));
+        m.byOracle().keySet().forEach(o -> counts.append(String.format(Locale.ROOT, " %s %d agree %d differ;", o,
+                n.agree().get(o), n.differ().get(o))));
+        counts.append(" closer:");
+        n.closer().forEach((k, v) -> counts.append(' ').append(k).append(' ').append(v));
+        String line = String.format(Locale.ROOT, "%-12s %-" + width + "s %s", m.status().label(), m.first().scene(), counts);
+        StringBuilder notes = new StringBuilder();
+        m.byOracle().forEach((o, c) -> {
+            if (!c.note().isEmpty()) {
+                notes.append(notes.length() == 0 ? "" : "; ").append(c.note());
+            }
+        });
+        return notes.length() == 0 ? line : line + "  [" + notes + "]";
     }
 
     /**

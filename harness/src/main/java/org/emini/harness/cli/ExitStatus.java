@@ -9,6 +9,28 @@ public final class ExitStatus {
     private ExitStatus() {
     }
 
+    /** The statuses as {@code --help} lists them (every command's help ends with this list). */
+    static final java.util.Map<String, String> HELP = helpList();
+
+    private static java.util.Map<String, String> helpList() {
+        java.util.Map<String, String> m = new java.util.LinkedHashMap<>();
+        m.put(" 0", "done, nothing found");
+        m.put(" 1", "done, and the command found what it looks for: an invalid scene (validate, expand, convert), a "
+                + "scene that is FAIL or ERROR (run), a scene that could not be compared (compare), a regression "
+                + "beyond the tolerances (diff), a fuzz failure (fuzz)");
+        m.put(" 2", "the command line is wrong: an unknown option, a bad value, PATHS or -k matching no scene");
+        m.put(" 3", "a file or folder could not be read or written");
+        m.put(" 4", "out of memory: give the JVM more (EMINI_JAVA_OPTS=-Xmx4g, or java -Xmx4g -jar ...)");
+        m.put("70", "an internal error of the harness, named in one line (EMINI_DEBUG=1 adds the stack trace)");
+        return java.util.Collections.unmodifiableMap(m);
+    }
+
+    /** Adds the list of exit statuses to the help of a command and of all its subcommands. */
+    static void describe(picocli.CommandLine cmd) {
+        cmd.getCommandSpec().usageMessage().exitCodeListHeading("%nExit status:%n").exitCodeList(HELP);
+        cmd.getSubcommands().values().forEach(ExitStatus::describe);
+    }
+
     /** Done, nothing to report. */
     public static final int OK = 0;
     /** Done, and the command found what it looks for: an invalid scene, a failing scene, a fuzz failure. */

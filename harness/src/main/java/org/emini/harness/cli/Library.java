@@ -19,24 +19,57 @@ public final class Library {
             description = "The scenario schema (default: scenarios/scenario.schema.json in this or a parent folder).")
     Path schema;
 
-    /** The schema file, found upward from the working directory when not given. */
+    /** The schema the jar carries, written to a temporary file on first use (outside a repository). */
+    private static Path bundled;
+
+    /**
+     * The schema file: given, else found upward from the working directory, else the copy inside the
+     * harness jar (the runnable jar used in another project's CI: scene ids are then relative to the
+     * working directory).
+     */
     public Path schemaFile() {
         if (schema != null) {
             return schema;
         }
+        Path found = findUpward();
+        return found != null ? found : bundledSchema();
+    }
+
+    private static Path findUpward() {
         for (Path dir = Path.of("").toAbsolutePath(); dir != null; dir = dir.getParent()) {
             Path candidate = dir.resolve("scenarios").resolve("scenario.schema.json");
             if (Files.isRegularFile(candidate)) {
                 return candidate;
             }
         }
-        throw new ParameterException(spec.commandLine(),
-                "cannot find scenarios/scenario.schema.json here or above; give --schema");
+        return null;
     }
 
-    /** The library folder (the schema's folder): scene ids are paths relative to it. */
+    private synchronized Path bundledSchema() {
+        if (bundled == null) {
+            try (java.io.InputStream in = SchemaCheck.class.getResourceAsStream("scenario.schema.json")) {
+                if (in == null) {
+                    throw new ParameterException(spec.commandLine(),
+                            "cannot find scenarios/scenario.schema.json here or above; give --schema");
+                }
+                Path f = Files.createTempFile("emini-scenario-schema", ".json");
+                f.toFile().deleteOnExit();
+                Files.write(f, in.readAllBytes());
+                bundled = f;
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        }
+        return bundled;
+    }
+
+    /**
+     * The library folder (the schema's folder): scene ids are paths relative to it; the working
+     * directory when the schema is the jar's own.
+     */
     public Path root() {
-        return schemaFile().toAbsolutePath().getParent();
+        Path s = schemaFile();
+        return s.equals(bundled) ? Path.of("").toAbsolutePath() : s.toAbsolutePath().getParent();
     }
 
     /**

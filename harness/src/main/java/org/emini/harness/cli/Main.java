@@ -13,8 +13,8 @@ import picocli.CommandLine.Command;
 @Command(name = "harness", mixinStandardHelpOptions = true, version = "emini harness 0.1.0",
         description = "Runs Emini's scenario library: validation, metrics, expectations, traces and reports.",
         subcommands = {ValidateCommand.class, RunCommand.class, CompareCommand.class, ExpandCommand.class,
-                SweepCommand.class, StabilityCommand.class, DashboardCommand.class, ConvertCommand.class,
-                FuzzCommand.class, FlavoursCommand.class, CommandLine.HelpCommand.class})
+                SweepCommand.class, StabilityCommand.class, DashboardCommand.class, DiffCommand.class,
+                ConvertCommand.class, FuzzCommand.class, FlavoursCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
     @Override
@@ -30,6 +30,7 @@ public final class Main implements Runnable {
     /** Runs the command line and returns its exit status (for tests). */
     public static int execute(String... args) {
         CommandLine cmd = new CommandLine(new Main());
+        ExitStatus.describe(cmd);
         Failures failures = new Failures();
         cmd.setExecutionExceptionHandler(failures);
         cmd.setParameterExceptionHandler(failures);

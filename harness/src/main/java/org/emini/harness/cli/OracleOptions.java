@@ -5,9 +5,9 @@ import org.emini.harness.oracle.OracleEnvironment;
 import org.emini.harness.sweep.OracleBackend;
 import picocli.CommandLine.Option;
 
-/** Options of the commands that run the pymunk oracle: where it is and which Python builds its environment. */
+/** Options of the commands that run the oracle (pymunk, Box2D v3): where it is and which Python builds its environment. */
 final class OracleOptions {
-    @Option(names = "--oracle", paramLabel = "DIR",
+    @Option(names = "--oracle-dir", paramLabel = "DIR",
             description = "The oracle's folder (default: oracle-py beside the scenarios folder).")
     Path oracleDir;
 
@@ -27,7 +27,15 @@ final class OracleOptions {
 
     /** A sweep backend running variants in pymunk, its process's stderr appended to {@code log}. */
     OracleBackend backend(Library library, Path log) {
-        return new OracleBackend(environment(library), library.schemaFile(), log, System.err,
-                OracleBackend.DEFAULT_TIMEOUT_SECONDS);
+        return backend(library, log, "pymunk");
     }
+
+    /** A sweep backend running variants in an oracle engine (pymunk or box2d). */
+    OracleBackend backend(Library library, Path log, String engine) {
+        return new OracleBackend(environment(library), library.schemaFile(), log, System.err,
+                OracleBackend.DEFAULT_TIMEOUT_SECONDS, engine);
+    }
+
+    /** The oracle engines: pymunk (Chipmunk 2D) and Box2D v3. */
+    static final java.util.List<String> ENGINES = java.util.List.of("pymunk", "box2d");
 }

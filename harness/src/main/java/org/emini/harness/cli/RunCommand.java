@@ -15,6 +15,7 @@ import org.emini.harness.report.JUnitXmlWriter;
 import org.emini.harness.report.ResultsWriter;
 import org.emini.harness.report.Summary;
 import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.Status;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -67,6 +68,19 @@ final class RunCommand implements Callable<Integer> {
                     + "Scaled runs). ./emini run runs the stacking and fast-body scenes at 0.025 and 25.")
     Double scale;
 
+    @Option(names = "-k", paramLabel = "PATTERN",
+            description = "Only the scenes whose id matches: a glob (stacking/*, *-60hz) or a substring (pendulum); "
+                    + "repeat for several.")
+    List<String> patterns;
+
+    @Option(names = "--fail-fast", description = "Stop at the first scene that is FAIL or ERROR (in file order); "
+            + "the scenes after it are not run or reported.")
+    boolean failFast;
+
+    @Option(names = "--junit", paramLabel = "FILE",
+            description = "Also write the JUnit XML report to FILE (it is always in REPORTS/junit/TEST-scenarios.xml).")
+    Path junit;
+
     @Option(names = "--progress", negatable = true,
             description = "Show a progress bar (default: when the output is a terminal).")
     Boolean progress;
@@ -80,7 +94,8 @@ final class RunCommand implements Callable<Integer> {
         Options.require(spec, sceneTimeout > 0, "--scene-timeout must be > 0, was " + sceneTimeout);
         // Made first, so that reports under a file fail now, not after the run.
         Files.createDirectories(reports);
-        List<ScenarioLoader.Loaded> loaded = SceneBatch.load(library.loader(), library.files(spec, paths));
+        List<ScenarioLoader.Loaded> loaded = SceneFilter.keep(spec, SceneBatch.load(library.loader(),
+                library.files(spec, paths)), patterns);
         if (sleeping != Sleeping.scene) {
             loaded = SceneBatch.withSleeping(loaded, sleeping == Sleeping.on);
         }
@@ -108,6 +123,13 @@ final class RunCommand implements Callable<Integer> {
                 SceneResult r = batch.result(l);
                 results.add(r);
                 System.out.println((bar ? "\r\033[K" : "") + ConsoleTable.line(r, width));
+                if (failFast && (r.status() == Status.FAIL || r.status() == Status.ERROR)) {
+                    int left = loaded.size() - results.size();
+                    if (left > 0) {
+                        System.out.println("--fail-fast: stopped at " + r.scene() + "; " + left + " scenes not run");
+                    }
+                    break;
+                }
             }
         }
         Summary summary = Summary.of(results, (System.nanoTime() - start) / 1e9);
@@ -119,6 +141,9 @@ final class RunCommand implements Callable<Integer> {
         ResultsWriter.write(reports.resolve("results.json"), results, summary, traces,
                 sleeping == Sleeping.scene ? null : sleeping.name());
         JUnitXmlWriter.write(reports.resolve("junit").resolve("TEST-scenarios.xml"), results, summary);
+        if (junit != null) {
+            JUnitXmlWriter.write(junit, results, summary);
+        }
         StringBuilder text = new StringBuilder();
         for (SceneResult r : results) {
             text.append(ConsoleTable.line(r, width)).append('\n');

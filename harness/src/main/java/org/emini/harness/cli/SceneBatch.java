@@ -125,6 +125,9 @@ final class SceneBatch implements AutoCloseable {
         if (settings.traces() != null && r.trace() != null && (settings.everyTrace() || l.scenario().run().record().trace())) {
             try {
                 TraceWriter.write(TraceWriter.fileFor(settings.traces(), r.scene()), r.scene(), "emini", r.trace());
+                if (r.replay() != null) {
+                    TraceWriter.writeReplay(TraceWriter.replayFor(settings.traces(), r.scene()), r.replay().json());
+                }
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
             }
@@ -138,6 +141,6 @@ final class SceneBatch implements AutoCloseable {
             msg.append("\n    ").append(p);
         }
         return new SceneResult(l.file().toString(), l.file().toString(), null, Status.ERROR, msg.toString(),
-                List.of(), List.of(), null, 0, 0, 0, 0, 0, null, -1);
+                List.of(), List.of(), null, 0, 0, 0, 0, 0, null, -1, null);
     }
 }

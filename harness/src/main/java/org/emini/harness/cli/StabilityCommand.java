@@ -51,8 +51,8 @@ final class StabilityCommand implements Callable<Integer> {
     @Option(names = "--iterations", paramLabel = "N", defaultValue = "10", description = "Solver iterations (default: ${DEFAULT-VALUE}).")
     int iterations;
 
-    @Option(names = "--engines", paramLabel = "NAME,...", split = ",", defaultValue = "emini,pymunk",
-            description = "Backends (default: ${DEFAULT-VALUE}); if pymunk cannot be set up its maps say why.")
+    @Option(names = "--engines", paramLabel = "NAME,...", split = ",", defaultValue = "emini,pymunk,box2d",
+            description = "Backends (default: ${DEFAULT-VALUE}); an oracle that cannot be set up has maps that say why.")
     List<String> engines;
 
     @Option(names = "--progress", negatable = true, description = "Show a progress bar (default: when the output is a terminal).")
@@ -75,30 +75,37 @@ final class StabilityCommand implements Callable<Integer> {
             Options.require(spec, known.contains(f), "--families: unknown family " + f + " (" + String.join(", ", known) + ")");
         }
         for (String e : engines) {
-            Options.require(spec, e.equals("emini") || e.equals("pymunk"), "--engines: unknown engine " + e + " (emini, pymunk)");
+            Options.require(spec, e.equals("emini") || OracleOptions.ENGINES.contains(e),
+                    "--engines: unknown engine " + e + " (emini, pymunk, box2d)");
         }
         List<SweepBackend> backends = new ArrayList<>();
-        OracleBackend pymunk = null;
+        List<OracleBackend> oracles = new ArrayList<>();
         for (String e : engines) {
             switch (e) {
                 case "emini" -> backends.add(new EngineBackend(library.loader()));
-                case "pymunk" -> backends.add(pymunk = oracle.backend(library, reports.resolve("oracle-serve.log")));
-                default -> throw new IllegalArgumentException("unknown engine " + e + " (emini, pymunk)");
+                default -> {
+                    OracleBackend o = oracle.backend(library, reports.resolve(e.equals("pymunk") ? "oracle-serve.log"
+                            : "oracle-serve-" + e + ".log"), e);
+                    oracles.add(o);
+                    backends.add(o);
+                }
             }
         }
         try {
-            return maps(grid, chosen, backends, pymunk);
+            return maps(grid, chosen, backends, oracles);
         } finally {
-            if (pymunk != null) {
-                pymunk.close();
+            for (OracleBackend o : oracles) {
+                o.close();
             }
         }
     }
 
-    private int maps(SweepGrid grid, List<StabilityFamily> chosen, List<SweepBackend> backends, OracleBackend pymunk)
+    private int maps(SweepGrid grid, List<StabilityFamily> chosen, List<SweepBackend> backends, List<OracleBackend> oracles)
             throws Exception {
-        if (pymunk != null && pymunk.unavailable() != null) {
-            System.err.println("stability: pymunk skipped: " + pymunk.unavailable());
+        for (OracleBackend o : oracles) {
+            if (o.unavailable() != null) {
+                System.err.println("stability: " + o.name() + " skipped: " + o.unavailable());
+            }
         }
         List<Object> out = new ArrayList<>();
         boolean bar = progress != null ? progress : System.console() != null;
@@ -141,8 +148,9 @@ final class StabilityCommand implements Callable<Integer> {
         doc.put("format", "emini-stability");
         doc.put("version", 1);
         doc.put("engines", backends.stream().map(SweepBackend::name).toList());
-        if (pymunk != null) {
-            doc.put("oracle", pymunk.unavailable() == null ? pymunk.versions() : pymunk.unavailable());
+        if (!oracles.isEmpty()) {
+            doc.put("oracle", String.join("; ", oracles.stream().map(o -> o.unavailable() == null ? o.versions()
+                    : o.unavailable()).toList()));
         }
         doc.put("families", out);
         Files.createDirectories(reports);

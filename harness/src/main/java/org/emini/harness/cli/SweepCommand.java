@@ -65,8 +65,8 @@ final class SweepCommand implements Callable<Integer> {
             description = "Runs per point; the cost is the best (default: ${DEFAULT-VALUE}).")
     int repeats;
 
-    @Option(names = "--engines", paramLabel = "NAME,...", split = ",", defaultValue = "emini,pymunk",
-            description = "Backends (default: ${DEFAULT-VALUE}). pymunk runs in the oracle's environment"
+    @Option(names = "--engines", paramLabel = "NAME,...", split = ",", defaultValue = "emini,pymunk,box2d",
+            description = "Backends (default: ${DEFAULT-VALUE}). pymunk and box2d (Box2D v3) run in the oracle's environment"
                     + " (oracle-py/.venv, created on first use); if it cannot be set up the sweep says why and"
                     + " runs the others.")
     List<String> engines;
@@ -77,8 +77,8 @@ final class SweepCommand implements Callable<Integer> {
     @Option(names = "--no-plots", description = "Do not draw the plots.")
     boolean noPlots;
 
-    @Option(names = "--plot-cost", paramLabel = "wall|cpu", defaultValue = "wall",
-            description = "The plots' cost axis: wall time (default) or the ticking thread's CPU time, steadier on a busy machine.")
+    @Option(names = "--plot-cost", paramLabel = "wall|cpu", defaultValue = "cpu",
+            description = "The plots' cost axis: the ticking thread's CPU time (default; steady on a busy machine) or wall time.")
     String plotCost;
 
     @Option(names = "--progress", negatable = true,
@@ -100,7 +100,8 @@ final class SweepCommand implements Callable<Integer> {
         }
         Options.require(spec, kn.length == 2 && n >= 1 && k >= 1 && k <= n, "--shard " + shard + ": K must be in 1..N");
         for (String e : engines) {
-            Options.require(spec, e.equals("emini") || e.equals("pymunk"), "--engines: unknown engine " + e + " (emini, pymunk)");
+            Options.require(spec, e.equals("emini") || OracleOptions.ENGINES.contains(e),
+                    "--engines: unknown engine " + e + " (emini, pymunk, box2d)");
         }
         SweepGrid grid = Options.grid(spec, rates, iterations);
         ScenarioLoader loader = library.loader();
@@ -109,32 +110,38 @@ final class SweepCommand implements Callable<Integer> {
             scenes.add(Sweep.read(loader, f));
         }
         List<SweepBackend> backends = new ArrayList<>();
-        OracleBackend pymunk = null;
+        List<OracleBackend> oracles = new ArrayList<>();
         for (String e : engines) {
             switch (e) {
                 case "emini" -> backends.add(new EngineBackend(loader));
-                case "pymunk" -> backends.add(pymunk = oracle.backend(library, reports.resolve("oracle-serve.log")));
-                default -> throw new IllegalArgumentException("unknown engine " + e + " (emini, pymunk)");
+                default -> {
+                    OracleBackend o = oracle.backend(library, reports.resolve(e.equals("pymunk") ? "oracle-serve.log"
+                            : "oracle-serve-" + e + ".log"), e);
+                    oracles.add(o);
+                    backends.add(o);
+                }
             }
         }
         try {
-            return sweep(grid, loader, scenes, backends, pymunk, k, n);
+            return sweep(grid, loader, scenes, backends, oracles, k, n);
         } finally {
-            if (pymunk != null) {
-                pymunk.close();
+            for (OracleBackend o : oracles) {
+                o.close();
             }
         }
     }
 
     private int sweep(SweepGrid grid, ScenarioLoader loader, List<Sweep.SceneFile> scenes, List<SweepBackend> backends,
-                      OracleBackend pymunk, int k, int n) throws Exception {
+                      List<OracleBackend> oracles, int k, int n) throws Exception {
         for (SweepBackend b : backends) {
             if (b.unavailable() != null) {
                 System.err.println("sweep: " + b.name() + " skipped: " + b.unavailable());
             }
         }
-        if (pymunk != null && pymunk.unavailable() == null) {
-            System.out.println("sweep: oracle " + pymunk.versions() + " (one process for the whole sweep)");
+        for (OracleBackend o : oracles) {
+            if (o.unavailable() == null) {
+                System.out.println("sweep: oracle " + o.versions() + " (one process for the whole sweep)");
+            }
         }
         PointStore store = new PointStore(results != null ? results : reports.resolve("points.jsonl"));
         Sweep sweep = new Sweep(loader, grid, repeats);

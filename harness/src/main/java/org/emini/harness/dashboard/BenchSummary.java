@@ -32,7 +32,31 @@ final class BenchSummary {
      * @throws IOException if the file exists but cannot be read or is not a benchmark report
      */
     static JsonObject read(Path reports) throws IOException {
+        return read(reports, (Path) null);
+    }
+
+    /**
+     * The summary of {@code reports/bench/bench.json}; without one, of the published run
+     * ({@code published}, the repository's {@code bench/results/}, marked {@code published} with the
+     * file's path); null when neither exists.
+     *
+     * @param published the folder of the published run, or null
+     * @throws IOException if the file exists but cannot be read or is not a benchmark report
+     */
+    static JsonObject read(Path reports, Path published) throws IOException {
         Path dir = reports.resolve("bench");
+        JsonObject own = readFolder(dir, "bench/");
+        if (own != null || published == null || !Files.isRegularFile(published.resolve("bench.json"))) {
+            return own;
+        }
+        String link = reports.toAbsolutePath().normalize().relativize(published.toAbsolutePath().normalize())
+                .toString().replace('\\', '/') + "/";
+        JsonObject out = readFolder(published, link);
+        out.addProperty("published", link + "bench.json");
+        return out;
+    }
+
+    private static JsonObject readFolder(Path dir, String link) throws IOException {
         Path file = dir.resolve("bench.json");
         JsonObject bench;
         try {
@@ -110,12 +134,13 @@ final class BenchSummary {
         out.add("engines", ids);
         // Links are relative to the dashboard (REPORTS/index.html); only files that exist.
         if (Files.isRegularFile(dir.resolve("index.html"))) {
-            out.addProperty("page", "bench/index.html");
+            out.addProperty("page", link + "index.html");
         }
         JsonArray images = new JsonArray();
-        for (String name : List.of("scenes.svg", "scaling.svg")) {
-            if (Files.isRegularFile(dir.resolve(name))) {
-                images.add("bench/" + name);
+        // The scaling plot only: the page draws the per-scene bars itself (its legend beside the bars).
+        for (String name : List.of("scaling.svg", "scaling.png")) {
+            if (Files.isRegularFile(dir.resolve(name)) && images.isEmpty()) {
+                images.add(link + name);
             }
         }
         out.add("images", images);

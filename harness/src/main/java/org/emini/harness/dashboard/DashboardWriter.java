@@ -13,10 +13,12 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.emini.harness.load.ScenarioLoader;
+import org.emini.harness.run.ReplayRecorder;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.ShapeSpec;
 import org.emini.harness.sweep.PointStore;
+import org.emini.harness.sweep.StabilityMapImage;
 import org.emini.harness.sweep.SweepPoint;
 import org.emini.harness.sweep.WorkPrecisionPlots;
 
@@ -29,9 +31,9 @@ import org.emini.harness.sweep.WorkPrecisionPlots;
  */
 public final class DashboardWriter {
     /** Frames kept per replay. */
-    public static final int MAX_FRAMES = 300;
+    public static final int MAX_FRAMES = ReplayRecorder.MAX_FRAMES;
     /** Scenes with more recorded bodies than this get no replay (their data would be megabytes). */
-    public static final int MAX_BODIES = 400;
+    public static final int MAX_BODIES = ReplayRecorder.MAX_BODIES;
 
     private final Path reports;
     private final ScenarioLoader loader;
@@ -75,7 +77,17 @@ public final class DashboardWriter {
             }
         }
         data.add("stability", stability);
-        data.add("bench", BenchSummary.read(reports));
+        JsonObject styles = new JsonObject();
+        for (String verdict : List.of("stable", "energy error", "energy growth", "NaN", "tunnelling", "penetration",
+                "collapse", "error", "unsupported", "not run")) {
+            String[] st = StabilityMapImage.style(verdict);
+            JsonArray a = new JsonArray();
+            a.add(st[0]);
+            a.add(st[1]);
+            styles.add(verdict, a);
+        }
+        data.add("stabilityStyles", styles);
+        data.add("bench", BenchSummary.read(reports, libraryRoot.getParent().resolve("bench").resolve("results")));
         List<SweepPoint> points = PointStore.loadAll(reports.resolve("sweep"));
         JsonArray pts = new JsonArray();
         JsonObject plots = new JsonObject();
@@ -117,6 +129,8 @@ public final class DashboardWriter {
                 entry.addProperty("file", "dashboard/" + file);
                 entry.addProperty("oracle", replay.has("oracle"));
                 entry.addProperty("sleeping", replay.getAsJsonObject("engine").has("sleeping"));
+                JsonObject eng = replay.getAsJsonObject("engine");
+                entry.addProperty("landscape", eng.has("landscape") && eng.getAsJsonArray("landscape").size() > 0);
                 replays.add(entry);
             }
         }
@@ -143,7 +157,12 @@ public final class DashboardWriter {
         if (l == null || !l.ok()) {
             return null;
         }
-        JsonObject engine = readJson(trace);
+        // The run's replay (every body, joints, particles, landscape) when it wrote one; else the trace.
+        String name = trace.getFileName().toString();
+        JsonObject recorded = name.endsWith(".trace.json")
+                ? readJson(trace.resolveSibling(name.substring(0, name.length() - ".trace.json".length()) + ".replay.json"))
+                : null;
+        JsonObject engine = recorded != null ? recorded : readJson(trace);
         if (engine == null || engine.getAsJsonObject("bodies").size() > MAX_BODIES) {
             return null;
         }
@@ -164,7 +183,8 @@ public final class DashboardWriter {
             return null;
         }
         out.add("bodies", shapes);
-        out.add("engine", thin(engine));
+        out.add("engine", recorded != null ? recorded : thin(engine));
+        out.addProperty("complete", recorded != null);
         Path oracle = reports.resolve("compare").resolve("traces").resolve("pymunk").resolve(id + ".trace.json");
         JsonObject o = readJson(oracle);
         if (o != null) {

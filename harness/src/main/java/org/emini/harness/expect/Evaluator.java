@@ -1,5 +1,7 @@
 package org.emini.harness.expect;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.run.Trace;
@@ -21,13 +23,33 @@ public final class Evaluator {
      * @param closedForm the scene's closed form, or null
      */
     public static Verdict evaluate(ExpectationSpec e, Trace trace, ClosedForm closedForm) {
+        if (e.group() != null) {
+            return group(e, trace, closedForm);
+        }
         int[] window = window(e, trace);
         if (window[0] > window[1]) {
             return verdict(e, false, Double.NaN, "no sample in the window [" + e.windowFrom() + ", " + e.windowUntil() + "] s");
         }
         switch (e.kind()) {
-            case METRIC:
-                return bounded(e, reduce(e, trace.column(e.channel()), trace, window));
+            case METRIC: {
+                double[] v = trace.column(e.channel());
+                if (e.minus() != null) {
+                    double[] m = trace.column(e.minus());
+                    for (int i = 0; i < v.length; i++) {
+                        v[i] -= m[i];
+                    }
+                }
+                double x = reduce(e, v, trace, window);
+                if (e.relativeTo() == null) {
+                    return bounded(e, x);
+                }
+                ExpectationSpec f = e.relativeTo();
+                int[] fw = window(f, trace);
+                double r = fw[0] <= fw[1] ? reduce(f, trace.column(f.channel()), trace, fw) : Double.NaN;
+                Verdict v2 = bounded(e.timesBounds(r), x);
+                return verdict(e, v2.passed() && Double.isFinite(r), x, v2.detail() + " (the bounds times " + f.channel()
+                        + " " + (f.of() != null ? f.of() : "at " + fmt(f.at()) + " s") + " = " + fmt(r) + ")");
+            }
             case CLOSED_FORM:
                 return bounded(e, closedFormError(e, trace, closedForm, window));
             case ENDS_NEAR: {
@@ -56,6 +78,80 @@ public final class Evaluator {
             default:
                 return stable(e, trace, window);
         }
+    }
+
+    /**
+     * A group ({@code box[*]}): the expectation on every member, in the trace's order (the order the scene
+     * creates them). It holds when it holds for each; the figure is the first failing member's, else the one
+     * nearest its bound. With {@code inOrder}, the members' first crossings must also come one after another.
+     */
+    private static Verdict group(ExpectationSpec e, Trace trace, ClosedForm closedForm) {
+        List<String> members = new ArrayList<>();
+        for (String b : trace.bodies()) {
+            if (Channels.matches(e.group(), b)) {
+                members.add(b);
+            }
+        }
+        if (members.isEmpty()) {
+            return verdict(e, false, Double.NaN, "no recorded body matches " + e.group());
+        }
+        Verdict worst = null;
+        double margin = Double.POSITIVE_INFINITY;
+        String worstBody = null;
+        int failed = 0;
+        double[] times = new double[members.size()];
+        for (int i = 0; i < members.size(); i++) {
+            ExpectationSpec one = e.forBody(members.get(i));
+            boolean bounded = !Double.isNaN(e.atMost()) || !Double.isNaN(e.atLeast()) || !Double.isNaN(e.near());
+            Verdict v = bounded || one.kind() != ExpectationSpec.Kind.METRIC ? evaluate(one, trace, closedForm) : null;
+            if (one.kind() == ExpectationSpec.Kind.METRIC && one.of() != null) {
+                int[] w = window(one, trace);
+                times[i] = w[0] <= w[1] ? reduce(one, trace.column(one.channel()), trace, w) : Double.NaN;
+            }
+            if (v == null) {
+                continue;
+            }
+            double m = margin(e, v.measured());
+            if (!v.passed()) {
+                failed++;
+            }
+            if (worst == null || (!v.passed() && worst.passed()) || (v.passed() == worst.passed() && m < margin)) {
+                worst = v;
+                margin = m;
+                worstBody = members.get(i);
+            }
+        }
+        if (e.inOrder()) {
+            for (int i = 1; i < times.length; i++) {
+                if (!(times[i] > times[i - 1])) {
+                    return verdict(e, false, times[i], String.format(Locale.ROOT, "%s crosses at %s s, not after %s at %s s "
+                            + "(%d bodies in order of creation)", members.get(i), fmt(times[i]), members.get(i - 1),
+                            fmt(times[i - 1]), members.size()));
+                }
+            }
+            if (worst == null) {
+                return verdict(e, true, times[times.length - 1], members.size() + " bodies cross in order, from "
+                        + fmt(times[0]) + " s to " + fmt(times[times.length - 1]) + " s");
+            }
+        }
+        String detail = worstBody + ": " + worst.detail() + (failed > 0 ? " (" + failed + " of " + members.size()
+                + " bodies fail)" : " (the nearest to its bound of " + members.size() + " bodies)");
+        return verdict(e, failed == 0, worst.measured(), detail);
+    }
+
+    /** How far inside its bound a figure is (negative outside); NaN counts as outside. */
+    private static double margin(ExpectationSpec e, double x) {
+        double m = Double.POSITIVE_INFINITY;
+        if (!Double.isNaN(e.atMost())) {
+            m = Math.min(m, e.atMost() - x);
+        }
+        if (!Double.isNaN(e.atLeast())) {
+            m = Math.min(m, x - e.atLeast());
+        }
+        if (!Double.isNaN(e.near())) {
+            m = Math.min(m, e.tolerance() - Math.abs(x - e.near()));
+        }
+        return Double.isNaN(m) ? Double.NEGATIVE_INFINITY : m;
     }
 
     private static Verdict stable(ExpectationSpec e, Trace trace, int[] w) {
@@ -113,6 +209,8 @@ public final class Evaluator {
                 return m;
             }
             case "drift": return (v[w[1]] - initial) / scale;
+            case "firstCrossing": return firstCrossing(v, trace, w, e.crossing());
+            case "period": return period(v, trace, w, e.crossing());
             case "maxDrift": {
                 double m = 0;
                 for (int i = w[0]; i <= w[1]; i++) {
@@ -123,6 +221,55 @@ public final class Evaluator {
             default:
                 throw new IllegalArgumentException("unknown reduction " + e.of());
         }
+    }
+
+    /**
+     * The time (s) the series first reaches {@code value} from the side it starts on, interpolated linearly
+     * between the two samples around it; NaN when it never does in the window.
+     */
+    static double firstCrossing(double[] v, Trace trace, int[] w, double value) {
+        double side = Math.signum(v[w[0]] - value);
+        if (side == 0) {
+            return trace.time(w[0]);
+        }
+        for (int i = w[0] + 1; i <= w[1]; i++) {
+            if (Double.isNaN(v[i])) {
+                return Double.NaN;
+            }
+            if (Math.signum(v[i] - value) != side) {
+                double f = (value - v[i - 1]) / (v[i] - v[i - 1]);
+                return trace.time(i - 1) + f * (trace.time(i) - trace.time(i - 1));
+            }
+        }
+        return Double.NaN;
+    }
+
+    /**
+     * The mean time (s) between successive upward crossings of {@code value} (the window's mean when NaN),
+     * each interpolated linearly: an oscillation's period. NaN with fewer than two crossings.
+     */
+    static double period(double[] v, Trace trace, int[] w, double value) {
+        double level = value;
+        if (Double.isNaN(level)) {
+            level = 0;
+            for (int i = w[0]; i <= w[1]; i++) {
+                level += v[i] / (w[1] - w[0] + 1);
+            }
+        }
+        double first = Double.NaN;
+        double last = Double.NaN;
+        int n = 0;
+        for (int i = w[0] + 1; i <= w[1]; i++) {
+            if (v[i - 1] < level && v[i] >= level) {
+                double t = trace.time(i - 1) + (level - v[i - 1]) / (v[i] - v[i - 1]) * (trace.time(i) - trace.time(i - 1));
+                if (n == 0) {
+                    first = t;
+                }
+                last = t;
+                n++;
+            }
+        }
+        return n < 2 ? Double.NaN : (last - first) / (n - 1);
     }
 
     private static double closedFormError(ExpectationSpec e, Trace trace, ClosedForm model, int[] w) {

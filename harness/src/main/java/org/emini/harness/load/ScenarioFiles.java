@@ -13,11 +13,24 @@ public final class ScenarioFiles {
     private ScenarioFiles() {
     }
 
-    /** Whether a file name is a scene (YAML or JSON, but not the schema) or an original world file. */
+    /**
+     * Whether a file name is a scene (YAML or JSON, but not the schema nor a world file's expectations,
+     * {@code *.expect.yaml}) or an original world file.
+     */
     public static boolean isScene(Path file) {
         String n = file.getFileName().toString();
         return (n.endsWith(".yaml") || n.endsWith(".yml") || n.endsWith(".json")) && !n.endsWith(".schema.json")
-            || isWorldFile(file);
+            && !n.endsWith(EXPECT_SUFFIX) || isWorldFile(file);
+    }
+
+    /** The suffix of the expectations file beside a world file: {@code level.phy} has {@code level.expect.yaml}. */
+    public static final String EXPECT_SUFFIX = ".expect.yaml";
+
+    /** The expectations file beside a world file ({@code level.expect.yaml} for {@code level.phy}), whether or not it exists. */
+    public static Path expectationsOf(Path worldFile) {
+        String n = worldFile.getFileName().toString();
+        int dot = n.lastIndexOf('.');
+        return worldFile.resolveSibling((dot > 0 ? n.substring(0, dot) : n) + EXPECT_SUFFIX);
     }
 
     /** Whether a file is an original World Designer file (.phy, .world), read through {@code convert}. */

@@ -47,7 +47,8 @@ public final class ScenarioLoader {
 
     /**
      * Loads a file. An original world file (.phy, .world) is converted as {@code convert} does, with
-     * a run of {@link #WORLD_FILE_SECONDS} and the expectation that it stays stable.
+     * a run of {@link #WORLD_FILE_SECONDS} and the expectation that it stays stable, and what its
+     * expectations file beside it adds ({@link WorldExpectations}).
      */
     public Loaded load(Path file) {
         String shown = shown(file);
@@ -105,7 +106,9 @@ public final class ScenarioLoader {
     /** A world file as scene text (what {@code convert} writes). */
     public static String worldFileScene(Path file) throws IOException {
         PhyWorld doc = new PhyReader().read(Files.readAllBytes(file));
-        return WorldToScenario.convert(doc, file.getFileName().toString(), WORLD_FILE_SECONDS).yaml();
+        String yaml = WorldToScenario.convert(doc, file.getFileName().toString(), WORLD_FILE_SECONDS).yaml();
+        Path sidecar = ScenarioFiles.expectationsOf(file);
+        return Files.isRegularFile(sidecar) ? WorldExpectations.merge(yaml, sidecar) : yaml;
     }
 
     /** Loads text (for tests and tools); {@code name} is the scene id when the text gives none. */

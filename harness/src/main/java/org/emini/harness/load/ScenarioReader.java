@@ -442,11 +442,23 @@ final class ScenarioReader {
                         && !metrics.containsKey(MetricSpec.Kind.energy)) {
                     metrics.put(MetricSpec.Kind.energy, MetricSpec.plain(MetricSpec.Kind.energy, null));
                 }
-                if (e.body() != null && bodies == null && !bodyNames.contains(e.body())) {
+                // The channels minus and relativeTo read: their metrics computed, their bodies recorded.
+                for (String extra : extraChannels(e)) {
+                    MetricSpec.Kind k = Channels.metricOf(extra);
+                    if (k != null && k != MetricSpec.Kind.tunnelling && !metrics.containsKey(k)) {
+                        metrics.put(k, MetricSpec.plain(k, null));
+                    }
+                    String[] xc = Channels.bodyChannel(extra);
+                    if (xc != null && bodies == null && !bodyNames.contains(xc[0])) {
+                        bodyNames.add(xc[0]);
+                    }
+                }
+                // A group's members are recorded by the runner, in the order the scene creates them.
+                if (e.body() != null && bodies == null && !bodyNames.contains(e.body()) && e.group() == null) {
                     bodyNames.add(e.body());
                 }
                 String[] bc = e.channel() != null ? Channels.bodyChannel(e.channel()) : null;
-                if (bc != null && bodies == null && !bodyNames.contains(bc[0])) {
+                if (bc != null && bodies == null && !bodyNames.contains(bc[0]) && e.group() == null) {
                     bodyNames.add(bc[0]);
                 }
             }
@@ -510,10 +522,16 @@ final class ScenarioReader {
         if (region != null && (max[0] < min[0] || max[1] < min[1])) {
             problem(op.key("region"), "region max must not be below min");
         }
-        return new MetricSpec(kind, about[0], about[1], walls, bodies, emitters, min, max, p);
+        return new MetricSpec(kind, about[0], about[1], walls, bodies, emitters, min, max, p,
+                "shape".equals(o.path("points").asText("centre")));
     }
 
     private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm) {
+        return expectation(e, p, names, hasClosedForm, false);
+    }
+
+    /** An expectation; {@code figure}: the figure of a relativeTo, which has no bounds of its own. */
+    private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm, boolean figure) {
         List<String> kinds = new ArrayList<>();
         for (String k : List.of("metric", "closedForm", "endsNear", "staysInside", "noTunnelling", "stable")) {
             if (e.has(k)) {
@@ -536,6 +554,8 @@ final class ScenarioReader {
             default -> ExpectationSpec.Kind.STABLE;
         };
         String channel = null;
+        String minus = null;
+        ExpectationSpec relativeTo = null;
         String of = e.has("of") ? e.get("of").asText() : null;
         double at = num(e, "at", Double.NaN);
         double atMost = num(e, "atMost", Double.NaN);
@@ -547,17 +567,41 @@ final class ScenarioReader {
             problem(p.key("near"), "near needs a tolerance");
         }
         String body = e.has("body") ? e.get("body").asText() : null;
-        if (body != null && !names.contains(body)) {
-            problem(p.key("body"), "no body named '" + body + "'");
+        if (body != null && !known(body, names)) {
+            problem(p.key("body"), Channels.isGroup(body) ? "'" + body + "' matches no body" : "no body named '" + body + "'");
         }
+        double crossing = num(e, "crossing", Double.NaN);
+        boolean inOrder = bool(e, "inOrder", false);
         if (kind == ExpectationSpec.Kind.METRIC || kind == ExpectationSpec.Kind.CLOSED_FORM) {
             channel = e.get(k).asText();
             JsonPath cp = p.key(k);
             String[] bc = Channels.bodyChannel(channel);
             if (bc == null && Channels.metricOf(channel) == null) {
                 problem(cp, "unknown channel '" + channel + "' (see scenarios/README.md, Metrics)");
-            } else if (bc != null && !names.contains(bc[0])) {
-                problem(cp, "no body named '" + bc[0] + "'");
+            } else if (bc != null && !known(bc[0], names)) {
+                problem(cp, Channels.isGroup(bc[0]) ? "'" + bc[0] + "' matches no body" : "no body named '" + bc[0] + "'");
+            }
+            if ("firstCrossing".equals(of) && Double.isNaN(crossing)) {
+                problem(p, "of: firstCrossing needs `crossing`: the value whose first crossing is timed");
+            }
+            if (inOrder && (!"firstCrossing".equals(of) || bc == null || !Channels.isGroup(bc[0]))) {
+                problem(p.key("inOrder"), "inOrder belongs to a group's firstCrossing (metric: body.NAME*.Q, of: firstCrossing)");
+            }
+            bounded = bounded || inOrder;
+            if (e.has("minus")) {
+                minus = e.get("minus").asText();
+                String[] mc = Channels.bodyChannel(minus);
+                if (mc == null && Channels.metricOf(minus) == null) {
+                    problem(p.key("minus"), "unknown channel '" + minus + "' (see scenarios/README.md, Metrics)");
+                } else if (mc != null && !names.contains(mc[0])) {
+                    problem(p.key("minus"), "no body named '" + mc[0] + "' (minus takes one channel, not a group)");
+                }
+            }
+            if (e.has("relativeTo")) {
+                relativeTo = expectation(e.get("relativeTo"), p.key("relativeTo"), names, hasClosedForm, true);
+                if (relativeTo != null && (relativeTo.kind() != ExpectationSpec.Kind.METRIC || relativeTo.group() != null)) {
+                    problem(p.key("relativeTo"), "relativeTo is a figure of one channel: {metric: CHANNEL, of: R} or {metric: CHANNEL, at: T}");
+                }
             }
             if ((of == null) == Double.isNaN(at)) {
                 problem(p, "give `of` or `at`, one of them");
@@ -573,12 +617,16 @@ final class ScenarioReader {
             } else if (errorOf) {
                 problem(p.key("of"), of + " compares with the closed form: use `closedForm:` instead of `metric:`");
             }
-            if (!bounded) {
+            if (!bounded && !figure) {
                 problem(p, "give atMost, atLeast or near with tolerance");
             }
+            if (bounded && figure) {
+                problem(p, "relativeTo is a figure: its bounds belong to the expectation");
+            }
         } else {
-            if (e.has("of") || e.has("at") || e.has("relative")) {
-                problem(p, "of, at and relative belong to metric and closedForm expectations");
+            if (e.has("of") || e.has("at") || e.has("relative") || e.has("crossing") || e.has("inOrder")
+                    || e.has("minus") || e.has("relativeTo")) {
+                problem(p, "of, at, relative, crossing, inOrder, minus and relativeTo belong to metric and closedForm expectations");
             }
         }
         double[] point = null;
@@ -607,7 +655,27 @@ final class ScenarioReader {
                 stable != null ? num(stable, "maxAngularSpeed", Double.NaN) : Double.NaN,
                 stable != null ? num(stable, "maxEnergyRise", Double.NaN) : Double.NaN,
                 e.has("name") ? e.get("name").asText() : null, e.has("why") ? e.get("why").asText() : null,
-                knownFailure(e.get("knownFailure")), p);
+                knownFailure(e.get("knownFailure")), p, crossing, inOrder, minus, relativeTo);
+    }
+
+    /** The channels an expectation reads besides its own: {@code minus} and {@code relativeTo}'s. */
+    static List<String> extraChannels(ExpectationSpec e) {
+        List<String> out = new ArrayList<>();
+        if (e.minus() != null) {
+            out.add(e.minus());
+        }
+        if (e.relativeTo() != null && e.relativeTo().channel() != null) {
+            out.add(e.relativeTo().channel());
+        }
+        return out;
+    }
+
+    /** Whether a body name in an expectation names a body, or as a group ({@code *}) matches at least one. */
+    private static boolean known(String name, Set<String> names) {
+        if (names.contains(name)) {
+            return true;
+        }
+        return Channels.isGroup(name) && names.stream().anyMatch(n -> Channels.matches(name, n));
     }
 
     private static MetricSpec.Kind neededMetric(ExpectationSpec e) {

@@ -13,10 +13,15 @@ import org.emini.harness.scenario.MetricSpec;
  * with the body; a body that hits a wall and is pushed back out never crosses that line, one that ends
  * on the far side did pass through. A centre that lands exactly on the line counts as still on its
  * previous side, so a crossing is counted once, when the centre reaches the other side. Checked after
- * every tick.
+ * every tick. With {@code points: shape} each vertex of a watched body's shape is watched as well (a rod
+ * whose tip passes a wall), counted once per body and tick.
  */
 final class TunnellingMetric implements Metric {
+    // Each watched point: its body and its place in the body's frame (the centre (0, 0), and with
+    // points: shape every vertex of the body's shape, so a rod's tip counts).
     private final Body[] watched;
+    private final float[] localX;
+    private final float[] localY;
     // Per (wall, body): the last position that was strictly on one side of the wall line.
     private final double[][] previous;
     private final List<Wall> walls = new ArrayList<>();
@@ -37,14 +42,40 @@ final class TunnellingMetric implements Metric {
                 list.remove(built.body(w.body()));
             }
         }
-        watched = list.toArray(new Body[0]);
+        List<Body> points = new ArrayList<>();
+        List<float[]> local = new ArrayList<>();
+        for (Body b : list) {
+            points.add(b);
+            local.add(new float[] {0f, 0f});
+            if (spec.wholeShape()) {
+                for (float[] v : ShapePoints.vertices(b.getShape())) {
+                    points.add(b);
+                    local.add(v);
+                }
+            }
+        }
+        watched = points.toArray(new Body[0]);
+        localX = new float[watched.length];
+        localY = new float[watched.length];
+        for (int i = 0; i < watched.length; i++) {
+            localX[i] = local.get(i)[0];
+            localY[i] = local.get(i)[1];
+        }
         previous = new double[walls.size()][watched.length * 2];
         for (double[] p : previous) {
             for (int i = 0; i < watched.length; i++) {
-                p[2 * i] = watched[i].getX();
-                p[2 * i + 1] = watched[i].getY();
+                p[2 * i] = x(i);
+                p[2 * i + 1] = y(i);
             }
         }
+    }
+
+    private double x(int i) {
+        return localX[i] == 0f && localY[i] == 0f ? watched[i].getX() : watched[i].toWorldX(localX[i], localY[i]);
+    }
+
+    private double y(int i) {
+        return localX[i] == 0f && localY[i] == 0f ? watched[i].getY() : watched[i].toWorldY(localX[i], localY[i]);
     }
 
     @Override
@@ -57,11 +88,15 @@ final class TunnellingMetric implements Metric {
         for (int w = 0; w < walls.size(); w++) {
             double[] line = walls.get(w).line();
             double[] p = previous[w];
+            // One count per body and tick, however many of its points crossed.
+            Body counted = null;
             for (int i = 0; i < watched.length; i++) {
-                double x = watched[i].getX();
-                double y = watched[i].getY();
-                if (Segments.cross(p[2 * i], p[2 * i + 1], x, y, line[0], line[1], line[2], line[3])) {
+                double x = x(i);
+                double y = y(i);
+                if (Segments.cross(p[2 * i], p[2 * i + 1], x, y, line[0], line[1], line[2], line[3])
+                        && counted != watched[i]) {
                     count++;
+                    counted = watched[i];
                 }
                 if (Segments.side(line[0], line[1], line[2], line[3], x, y) != 0) {
                     p[2 * i] = x;

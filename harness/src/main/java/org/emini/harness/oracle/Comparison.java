@@ -100,6 +100,19 @@ public final class Comparison {
      */
     public static Scene compare(Scenario s, String engineStatus, Trace engine, OracleScene oracle, Trace oracleTrace,
                                 ClosedForm closedForm) {
+        return compare(s, engineStatus, engine, oracle, oracleTrace, closedForm, "pymunk");
+    }
+
+    /**
+     * Compares a scene with one oracle, named in the notes. pymunk has no continuous collision, so in a
+     * continuousCollision scene its rows with a reference are judged against the truth only; Box2D has
+     * it, so its rows are judged for agreement too.
+     *
+     * @param oracleName {@code pymunk} or {@code box2d}
+     */
+    public static Scene compare(Scenario s, String engineStatus, Trace engine, OracleScene oracle, Trace oracleTrace,
+                                ClosedForm closedForm, String oracleName) {
+        boolean lacksContinuous = oracleName.equals("pymunk");
         OracleSettings settings = OracleSettings.of(s.oracle());
         String model = s.closedForm() != null ? s.closedForm().node().get("model").asText() : null;
         List<String> notes = new ArrayList<>();
@@ -122,17 +135,18 @@ public final class Comparison {
             // One note per kind, with its count: a world of 14 faced segments says so once.
             Map<String, Integer> kinds = new LinkedHashMap<>();
             for (OracleScene.Note n : oracle.unsupported()) {
-                kinds.merge("pymunk leaves out " + n.element() + (n.affectsBodies() ? " (changes the motion)" : " (no effect on bodies)"),
+                kinds.merge(oracleName + " leaves out " + n.element() + (n.affectsBodies() ? " (changes the motion)" : " (no effect on bodies)"),
                         1, Integer::sum);
             }
             for (OracleScene.Note n : oracle.approximations()) {
-                kinds.merge("pymunk approximates " + n.element(), 1, Integer::sum);
+                kinds.merge(oracleName + " approximates " + n.element(), 1, Integer::sum);
             }
             kinds.forEach((note, times) -> notes.add(times > 1 ? note + " (x" + times + ")" : note));
         }
-        if (settings.continuousCollision()) {
+        if (settings.continuousCollision() && lacksContinuous) {
             notes.add("tests continuous collision, which pymunk lacks: judged against the reference");
         }
+        OracleSettings judged = lacksContinuous ? settings : settings.withoutContinuousCollision();
         Trace any = engine != null ? engine : oracleTrace;
         List<Row> rows = new ArrayList<>();
         if (any != null) {
@@ -153,13 +167,13 @@ public final class Comparison {
                         continue;
                     }
                     rows.add(series(c, engine, oracleTrace, samples, closedForm, "closed form " + model,
-                            ErrorFigure.of(s, c, settings), settings, incomplete));
+                            ErrorFigure.of(s, c, settings), judged, incomplete));
                     covered.add(c);
                 }
             }
             for (String[] f : METRIC_FIGURES) {
                 if (any.has(f[0]) && !covered.contains(f[0])) {
-                    rows.add(aggregate(f[0], f[1], engine, oracleTrace, samples, laws, settings, incomplete));
+                    rows.add(aggregate(f[0], f[1], engine, oracleTrace, samples, laws, judged, incomplete));
                 }
             }
             if (!settings.chaotic()) {
@@ -171,7 +185,7 @@ public final class Comparison {
                     for (String q : TRAJECTORY) {
                         String c = Channels.body(b, q);
                         if (!covered.contains(c)) {
-                            rows.add(series(c, engine, oracleTrace, samples, null, null, null, settings, incomplete));
+                            rows.add(series(c, engine, oracleTrace, samples, null, null, null, judged, incomplete));
                         }
                     }
                 }

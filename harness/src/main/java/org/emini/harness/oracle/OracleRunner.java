@@ -68,10 +68,22 @@ public final class OracleRunner {
      * @param jobs scenes the oracle runs in parallel
      */
     public Run start(List<Path> files, Path out, int jobs) throws IOException {
+        return start(files, out, jobs, "pymunk");
+    }
+
+    /**
+     * Starts one of the oracle's engines on scene files.
+     *
+     * @param files the scene files
+     * @param out where traces and oracle-results.json go
+     * @param jobs scenes the oracle runs in parallel
+     * @param engine {@code pymunk} or {@code box2d}
+     */
+    public Run start(List<Path> files, Path out, int jobs, String engine) throws IOException {
         Files.createDirectories(out);
         Files.deleteIfExists(out.resolve("oracle-results.json"));
         List<String> command = new ArrayList<>(List.of(interpreter.toString(), "-m", "emini_oracle", "run",
-                "--quiet", "--schema", schema.toAbsolutePath().toString(), "--jobs", Integer.toString(jobs),
+                "--engine", engine, "--quiet", "--schema", schema.toAbsolutePath().toString(), "--jobs", Integer.toString(jobs),
                 "--out", out.toAbsolutePath().toString()));
         for (Path f : files) {
             command.add(f.toAbsolutePath().toString());

@@ -26,6 +26,11 @@ public record OracleSettings(boolean chaotic, boolean continuousCollision, Strin
     public static final OracleSettings DEFAULT = new OracleSettings(false, false, null, Map.of(), 0,
             Double.POSITIVE_INFINITY);
 
+    /** The same settings for an oracle that has continuous collision (Box2D): its rows are judged for agreement. */
+    public OracleSettings withoutContinuousCollision() {
+        return new OracleSettings(chaotic, false, skip, tolerances, windowFrom, windowUntil);
+    }
+
     /** Reads the section (null: the defaults). */
     public static OracleSettings of(Section section) {
         if (section == null) {

@@ -27,6 +27,17 @@ public final class TraceWriter {
         return tracesDir.resolve(scene + ".trace.json");
     }
 
+    /** The replay file of a scene ({@code ReplayRecorder}), beside its trace. */
+    public static Path replayFor(Path tracesDir, String scene) {
+        return tracesDir.resolve(scene + ".replay.json");
+    }
+
+    /** Writes a replay (the dashboard's frames of a run). */
+    public static void writeReplay(Path file, com.google.gson.JsonObject replay) throws IOException {
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        Files.writeString(file, replay.toString(), StandardCharsets.UTF_8);
+    }
+
     /**
      * Writes a trace.
      *

@@ -58,7 +58,7 @@ public final class ScenarioRunner {
             metrics = Metrics.create(scenario.run().record().metrics(), built);
         } catch (UnsupportedElementException e) {
             progress.accept(ticks);
-            return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null, -1);
+            return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null, -1, null);
         } catch (RuntimeException | OutOfMemoryError e) {
             progress.accept(ticks);
             return errorOrKnown(scenario, "building the world: " + e, 0, 0);
@@ -77,8 +77,12 @@ public final class ScenarioRunner {
         Body[] sleepers = world.isSleepingEnabled() ? built.bodies().values().stream().filter(Body::isDynamic)
                 .toArray(Body[]::new) : null;
         int mostAsleep = sleepers == null ? -1 : 0;
+        ReplayRecorder replay = ReplayRecorder.of(built, ticks);
         try {
             sample(trace, 0, bodies, metrics);
+            if (replay != null) {
+                replay.after(0);
+            }
             for (long k = 0; k < ticks; k++) {
                 schedule.beforeTick(k);
                 world.tick();
@@ -98,6 +102,9 @@ public final class ScenarioRunner {
                 }
                 for (Metric m : metrics) {
                     m.afterTick();
+                }
+                if (replay != null) {
+                    replay.after(k + 1);
                 }
                 if ((k + 1) % every == 0 || k + 1 == ticks) {
                     sample(trace, k + 1, bodies, metrics);
@@ -126,7 +133,7 @@ public final class ScenarioRunner {
         StringBuilder message = new StringBuilder();
         Status status = Judge.judge(verdicts, scenario.knownFailure(), stale, message);
         return result(scenario, status, message.toString(), verdicts, stale, ticks, millis(t1 - t0), runMillis, trace,
-                mostAsleep);
+                mostAsleep, replay);
     }
 
     /**
@@ -187,8 +194,18 @@ public final class ScenarioRunner {
                 }
             }
         }
-        // Bodies an expectation reads are always recorded.
+        // Bodies an expectation reads are always recorded; with a group, all in creation order (inOrder reads it).
+        boolean groups = false;
         for (ExpectationSpec e : scenario.run().expect()) {
+            if (e.group() != null) {
+                groups = true;
+                for (String n : built.bodies().keySet()) {
+                    if (Channels.matches(e.group(), n)) {
+                        out.add(n);
+                    }
+                }
+                continue;
+            }
             if (e.body() != null) {
                 out.add(e.body());
             }
@@ -196,6 +213,17 @@ public final class ScenarioRunner {
             if (bc != null) {
                 out.add(bc[0]);
             }
+            for (String extra : new String[] {e.minus(), e.relativeTo() != null ? e.relativeTo().channel() : null}) {
+                String[] xc = extra != null ? Channels.bodyChannel(extra) : null;
+                if (xc != null) {
+                    out.add(xc[0]);
+                }
+            }
+        }
+        if (groups) {
+            List<String> ordered = new ArrayList<>(built.bodies().keySet());
+            ordered.retainAll(out);
+            return ordered;
         }
         return new ArrayList<>(out);
     }
@@ -229,7 +257,7 @@ public final class ScenarioRunner {
     private static SceneResult errorOrKnown(Scenario s, String message, double build, double run) {
         Status status = s.knownFailure() != null ? Status.KNOWN_FAILURE : Status.ERROR;
         String text = s.knownFailure() != null ? message + " [known: " + s.knownFailure().reason() + "]" : message;
-        return result(s, status, text, List.of(), List.of(), 0, build, run, null, -1);
+        return result(s, status, text, List.of(), List.of(), 0, build, run, null, -1, null);
     }
 
     private static int asleep(Body[] bodies) {
@@ -242,9 +270,9 @@ public final class ScenarioRunner {
 
     private static SceneResult result(Scenario s, Status status, String message, List<Verdict> verdicts,
                                       List<String> stale, long ticks, double build, double run, Trace trace,
-                                      int mostAsleep) {
+                                      int mostAsleep, ReplayRecorder replay) {
         return new SceneResult(s.name(), s.file(), s.category(), status, message, verdicts, stale, s.knownFailure(),
-                s.bodies().size(), ticks, s.world().timestep(), build, run, trace, mostAsleep);
+                s.bodies().size(), ticks, s.world().timestep(), build, run, trace, mostAsleep, replay);
     }
 
     private static double millis(long nanos) {

@@ -23,20 +23,21 @@ import org.emini.harness.scenario.KnownFailure;
  * @param trace the sampled run, or null when nothing ran
  * @param mostAsleep the most dynamic bodies asleep at one sample, or -1 when the world did not let
  *     bodies sleep (or nothing ran)
+ * @param replay what the dashboard's replay draws ({@link ReplayRecorder}), or null
  */
 public record SceneResult(String scene, String file, String category, Status status, String message,
                           List<Verdict> verdicts, List<String> staleKnownFailures, KnownFailure knownFailure,
                           int bodies, long ticks, double timestep, double buildMillis, double runMillis, Trace trace,
-                          int mostAsleep) {
+                          int mostAsleep, ReplayRecorder replay) {
 
     /** Microseconds of wall time per tick (NaN when nothing ran). */
     public double microsPerTick() {
         return ticks == 0 ? Double.NaN : runMillis * 1000 / ticks;
     }
 
-    /** The same result without its trace (after the trace is written, to free memory). */
+    /** The same result without its trace and replay (after they are written, to free memory). */
     public SceneResult withoutTrace() {
         return new SceneResult(scene, file, category, status, message, verdicts, staleKnownFailures, knownFailure,
-                bodies, ticks, timestep, buildMillis, runMillis, null, mostAsleep);
+                bodies, ticks, timestep, buildMillis, runMillis, null, mostAsleep, null);
     }
 }

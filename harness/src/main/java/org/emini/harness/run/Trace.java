@@ -136,28 +136,50 @@ public final class Trace {
         return ticks.get(i) * timestep;
     }
 
-    /** Whether a channel (including the derived {@code body.NAME.speed}) can be read. */
+    /** Whether a channel (including the derived body.NAME.speed, .displacement and .turn) can be read. */
     public boolean has(String channel) {
         if (index.containsKey(channel)) {
             return true;
         }
         String[] bc = Channels.bodyChannel(channel);
-        return bc != null && bc[1].equals("speed") && index.containsKey(Channels.body(bc[0], "vx"));
+        return bc != null && index.containsKey(Channels.body(bc[0], "x"))
+                && (bc[1].equals("speed") || bc[1].equals("displacement") || bc[1].equals("turn"));
     }
 
-    /** The values of a channel over the samples; body.NAME.speed is derived from vx and vy. */
+    /**
+     * The values of a channel over the samples; body.NAME.speed is derived from vx and vy, .displacement
+     * (the distance from the first sample's position) from x and y, .turn (angle − the first sample's) from
+     * angle.
+     */
     public double[] column(String channel) {
         Integer c = index.get(channel);
         double[] out = new double[rows.size()];
         if (c == null) {
-            String[] bc = Channels.bodyChannel(channel);
-            if (bc == null || !bc[1].equals("speed") || !index.containsKey(Channels.body(bc[0], "vx"))) {
+            if (!has(channel)) {
                 throw new IllegalArgumentException("the trace has no channel " + channel);
             }
-            double[] vx = column(Channels.body(bc[0], "vx"));
-            double[] vy = column(Channels.body(bc[0], "vy"));
-            for (int i = 0; i < out.length; i++) {
-                out[i] = Math.hypot(vx[i], vy[i]);
+            String[] bc = Channels.bodyChannel(channel);
+            switch (bc[1]) {
+                case "speed" -> {
+                    double[] vx = column(Channels.body(bc[0], "vx"));
+                    double[] vy = column(Channels.body(bc[0], "vy"));
+                    for (int i = 0; i < out.length; i++) {
+                        out[i] = Math.hypot(vx[i], vy[i]);
+                    }
+                }
+                case "displacement" -> {
+                    double[] x = column(Channels.body(bc[0], "x"));
+                    double[] y = column(Channels.body(bc[0], "y"));
+                    for (int i = 0; i < out.length; i++) {
+                        out[i] = Math.hypot(x[i] - x[0], y[i] - y[0]);
+                    }
+                }
+                default -> {
+                    double[] a = column(Channels.body(bc[0], "angle"));
+                    for (int i = 0; i < out.length; i++) {
+                        out[i] = a[i] - a[0];
+                    }
+                }
             }
             return out;
         }

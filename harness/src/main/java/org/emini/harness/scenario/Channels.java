@@ -11,8 +11,12 @@ public final class Channels {
     private Channels() {
     }
 
-    /** Per-body quantities: {@code body.NAME.Q}. */
-    public static final List<String> BODY_QUANTITIES = List.of("x", "y", "angle", "vx", "vy", "omega", "speed");
+    /**
+     * Per-body quantities: {@code body.NAME.Q}. {@code speed} (|v|), {@code displacement} (distance from the
+     * first sample's position) and {@code turn} (angle − the first sample's angle) are derived from the others.
+     */
+    public static final List<String> BODY_QUANTITIES = List.of("x", "y", "angle", "vx", "vy", "omega", "speed",
+            "displacement", "turn");
 
     /** The channels each metric produces, in trace order. */
     public static final Map<MetricSpec.Kind, List<String>> OF_METRIC = Map.of(
@@ -48,6 +52,24 @@ public final class Channels {
         }
         String quantity = channel.substring(dot + 1);
         return BODY_QUANTITIES.contains(quantity) ? new String[] {channel.substring(5, dot), quantity} : null;
+    }
+
+    /** Whether a body name in an expectation is a group: {@code *} stands for any text ({@code box[*]}, {@code wheel*}). */
+    public static boolean isGroup(String name) {
+        return name != null && name.indexOf('*') >= 0;
+    }
+
+    /** Whether a body name matches a group pattern ({@code *} any text, everything else literal). */
+    public static boolean matches(String pattern, String name) {
+        String[] parts = pattern.split("\\*", -1);
+        StringBuilder re = new StringBuilder();
+        for (int i = 0; i < parts.length; i++) {
+            if (i > 0) {
+                re.append(".*");
+            }
+            re.append(java.util.regex.Pattern.quote(parts[i]));
+        }
+        return name.matches(re.toString());
     }
 
     /** The channel name of a body quantity. */

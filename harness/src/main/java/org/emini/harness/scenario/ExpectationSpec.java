@@ -26,15 +26,43 @@ import org.emini.harness.load.JsonPath;
  * @param why where the bound comes from, or null
  * @param knownFailure the known-failure mark, or null
  * @param path where the expectation is written
+ * @param crossing the value whose crossings {@code firstCrossing} and {@code period} time, or NaN (period:
+ *     the window's mean)
+ * @param inOrder a group's first crossings must come in the order the scene creates its bodies
+ * @param minus a channel subtracted sample by sample from {@code channel} (body A against body B), or null
+ * @param relativeTo a figure (a METRIC expectation without bounds) that multiplies every bound, or null
  */
 public record ExpectationSpec(Kind kind, String channel, String of, double at, boolean relative, String body,
                               double[] point, double[] max, double atMost, double atLeast, double near,
                               double tolerance, double windowFrom, double windowUntil, double maxSpeed,
                               double maxAngularSpeed, double maxEnergyRise, String name, String why,
-                              KnownFailure knownFailure, JsonPath path) {
+                              KnownFailure knownFailure, JsonPath path, double crossing, boolean inOrder,
+                              String minus, ExpectationSpec relativeTo) {
 
     /** Expectation kinds. */
     public enum Kind { METRIC, CLOSED_FORM, ENDS_NEAR, STAYS_INSIDE, NO_TUNNELLING, STABLE }
+
+    /** The same expectation on one member of its group: the body and the channel's body replaced. */
+    public ExpectationSpec forBody(String member) {
+        String[] bc = channel != null ? Channels.bodyChannel(channel) : null;
+        return new ExpectationSpec(kind, bc != null ? Channels.body(member, bc[1]) : channel, of, at, relative,
+                body != null ? member : null, point, max, atMost, atLeast, near, tolerance, windowFrom, windowUntil,
+                maxSpeed, maxAngularSpeed, maxEnergyRise, name, why, knownFailure, path, crossing, false, minus, relativeTo);
+    }
+
+    /** The same expectation with every bound multiplied by {@code r} (for {@code relativeTo}). */
+    public ExpectationSpec timesBounds(double r) {
+        return new ExpectationSpec(kind, channel, of, at, relative, body, point, max, atMost * r, atLeast * r, near * r,
+                tolerance * Math.abs(r), windowFrom, windowUntil, maxSpeed, maxAngularSpeed, maxEnergyRise, name, why,
+                knownFailure, path, crossing, inOrder, minus, null);
+    }
+
+    /** The group pattern this expectation reads ({@code body: box[*]} or {@code metric: body.box[*].y}), or null. */
+    public String group() {
+        String[] bc = channel != null ? Channels.bodyChannel(channel) : null;
+        String b = bc != null ? bc[0] : body;
+        return Channels.isGroup(b) ? b : null;
+    }
 
     /** A short human description, used in reports when the scene gives no name. */
     public String describe() {
@@ -45,7 +73,8 @@ public record ExpectationSpec(Kind kind, String channel, String of, double at, b
         switch (kind) {
             case METRIC:
             case CLOSED_FORM:
-                out.append(kind == Kind.CLOSED_FORM ? "closedForm " : "").append(channel).append(' ')
+                out.append(kind == Kind.CLOSED_FORM ? "closedForm " : "").append(channel)
+                        .append(minus != null ? " − " + minus : "").append(' ')
                         .append(of != null ? of : "at " + at + " s");
                 if (relative) {
                     out.append(" (relative)");
@@ -58,6 +87,9 @@ public record ExpectationSpec(Kind kind, String channel, String of, double at, b
                 }
                 if (!Double.isNaN(atMost)) {
                     out.append(" ≤ ").append(atMost);
+                }
+                if (relativeTo != null) {
+                    out.append(" × ").append(relativeTo.describe());
                 }
                 break;
             case ENDS_NEAR:

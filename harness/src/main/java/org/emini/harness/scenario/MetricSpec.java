@@ -15,9 +15,11 @@ import org.emini.harness.load.JsonPath;
  * @param regionMin particles: the region's least corner (px), or null without a region
  * @param regionMax particles: the region's greatest corner (px), or null without a region
  * @param path where it is requested (null when an expectation asked for it implicitly)
+ * @param wholeShape tunnelling: watch every vertex of a body's shape as well as its centre ({@code points: shape})
  */
 public record MetricSpec(Kind kind, double aboutX, double aboutY, List<WallSpec> walls, List<String> bodies,
-                         List<String> emitters, double[] regionMin, double[] regionMax, JsonPath path) {
+                         List<String> emitters, double[] regionMin, double[] regionMax, JsonPath path,
+                         boolean wholeShape) {
 
     /** Metric kinds, named as in the scene files; each documented in scenarios/README.md. */
     public enum Kind { energy, linearMomentum, angularMomentum, penetration, constraintError, tunnelling, stability,
@@ -25,7 +27,7 @@ public record MetricSpec(Kind kind, double aboutX, double aboutY, List<WallSpec>
 
     /** A metric with no options. */
     public static MetricSpec plain(Kind kind, JsonPath path) {
-        return new MetricSpec(kind, 0, 0, List.of(), List.of(), List.of(), null, null, path);
+        return new MetricSpec(kind, 0, 0, List.of(), List.of(), List.of(), null, null, path, false);
     }
 
     /**

@@ -81,7 +81,7 @@ public final class SceneScaling {
     public static int lengthPower(String channel) {
         String[] body = Channels.bodyChannel(channel);
         if (body != null) {
-            return body[1].equals("angle") || body[1].equals("omega") ? 0 : 1;
+            return body[1].equals("angle") || body[1].equals("omega") || body[1].equals("turn") ? 0 : 1;
         }
         switch (channel) {
             case "energy.kinetic":
@@ -170,7 +170,7 @@ public final class SceneScaling {
                 walls.add(new MetricSpec.WallSpec(w.body(), times(w.from(), k), times(w.to(), k)));
             }
             metrics.add(new MetricSpec(m.kind(), m.aboutX() * k, m.aboutY() * k, walls, m.bodies(), m.emitters(),
-                    times(m.regionMin(), k), times(m.regionMax(), k), m.path()));
+                    times(m.regionMin(), k), times(m.regionMax(), k), m.path(), m.wholeShape()));
         }
         RecordSpec rec = r.record();
         List<ExpectationSpec> expect = new ArrayList<>();
@@ -186,7 +186,8 @@ public final class SceneScaling {
         switch (e.kind()) {
             case METRIC:
             case CLOSED_FORM:
-                f = e.relative() ? 1 : Math.pow(k, lengthPower(e.channel()));
+                // Times (firstCrossing, period) do not scale; the value crossed does, as the channel.
+                f = e.relative() || isTime(e.of()) || e.relativeTo() != null ? 1 : Math.pow(k, lengthPower(e.channel()));
                 break;
             case ENDS_NEAR:
             case STAYS_INSIDE:
@@ -199,7 +200,12 @@ public final class SceneScaling {
         return new ExpectationSpec(e.kind(), e.channel(), e.of(), e.at(), e.relative(), e.body(), times(e.point(), k),
                 times(e.max(), k), e.atMost() * f, e.atLeast() * f, e.near() * f, e.tolerance() * f, e.windowFrom(),
                 e.windowUntil(), e.maxSpeed() * k, e.maxAngularSpeed(), e.maxEnergyRise() * k * k, e.name(), e.why(),
-                e.knownFailure(), e.path());
+                e.knownFailure(), e.path(), e.crossing() * (e.channel() == null ? 1 : Math.pow(k, lengthPower(e.channel()))),
+                e.inOrder(), e.minus(), e.relativeTo());
+    }
+
+    private static boolean isTime(String of) {
+        return "firstCrossing".equals(of) || "period".equals(of);
     }
 
     private static Section landscape(Section s, double k) {

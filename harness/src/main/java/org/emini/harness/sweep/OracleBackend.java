@@ -59,6 +59,7 @@ public final class OracleBackend implements SweepBackend, AutoCloseable {
         return t;
     });
 
+    private final String engine;
     private boolean tried;
     private String unavailable;
     private Process process;
@@ -76,6 +77,22 @@ public final class OracleBackend implements SweepBackend, AutoCloseable {
      */
     public OracleBackend(OracleEnvironment environment, Path schema, Path log, PrintStream progress,
                          double timeoutSeconds) {
+        this(environment, schema, log, progress, timeoutSeconds, "pymunk");
+    }
+
+    /**
+     * An oracle backend running one of the oracle's engines.
+     *
+     * @param environment the oracle's virtual environment (created on first use)
+     * @param schema the scenario schema the oracle validates variants with
+     * @param log where the oracle process's stderr goes (appended)
+     * @param progress where environment set-up messages go (stderr)
+     * @param timeoutSeconds time limit for one variant
+     * @param engine {@code pymunk} or {@code box2d} (Box2D v3; oracle-py/MAPPING.md, Box2D v3)
+     */
+    public OracleBackend(OracleEnvironment environment, Path schema, Path log, PrintStream progress,
+                         double timeoutSeconds, String engine) {
+        this.engine = engine;
         this.environment = environment;
         this.schema = schema.toAbsolutePath();
         this.log = log.toAbsolutePath();
@@ -85,7 +102,7 @@ public final class OracleBackend implements SweepBackend, AutoCloseable {
 
     @Override
     public String name() {
-        return "pymunk";
+        return engine;
     }
 
     /** Sets up the environment and starts the oracle on first call; null when it runs, else why not. */
@@ -96,7 +113,7 @@ public final class OracleBackend implements SweepBackend, AutoCloseable {
             try {
                 start();
             } catch (IOException e) {
-                unavailable = "the pymunk oracle cannot run: " + e.getMessage().strip()
+                unavailable = "the " + engine + " oracle cannot run: " + e.getMessage().strip()
                         + " (the environment is oracle-py/.venv, built from oracle-py/requirements.txt;"
                         + " set EMINI_PYTHON or --python to choose the interpreter)";
                 stop();
@@ -195,7 +212,8 @@ public final class OracleBackend implements SweepBackend, AutoCloseable {
         stop();
         Path interpreter = environment.ensure(progress);
         Files.createDirectories(log.getParent());
-        List<String> command = List.of(interpreter.toString(), "-m", "emini_oracle", "serve", "--schema", schema.toString());
+        List<String> command = List.of(interpreter.toString(), "-m", "emini_oracle", "serve", "--engine", engine,
+                "--schema", schema.toString());
         process = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.appendTo(log.toFile()))
                 .redirectInput(ProcessBuilder.Redirect.PIPE).start();
         toOracle = new BufferedWriter(new OutputStreamWriter(process.getOutputStream(), StandardCharsets.UTF_8));
@@ -217,7 +235,8 @@ public final class OracleBackend implements SweepBackend, AutoCloseable {
             if (!r.has("ready") || !r.get("ready").getAsBoolean()) {
                 throw new IllegalStateException("no ready line");
             }
-            versions = "pymunk " + text(r, "pymunk") + ", Chipmunk " + text(r, "chipmunk");
+            versions = engine.equals("box2d") ? "Box2D " + text(r, "box2d") + " (pyb2d3 " + text(r, "pyb2d3") + ")"
+                    : "pymunk " + text(r, "pymunk") + ", Chipmunk " + text(r, "chipmunk");
         } catch (RuntimeException e) {
             stop();
             throw new IOException("the oracle process did not start as expected; it said: " + abbreviate(ready));

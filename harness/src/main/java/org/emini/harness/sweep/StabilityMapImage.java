@@ -23,7 +23,7 @@ public final class StabilityMapImage {
     }
 
     /** The colour and short label of a verdict. */
-    static String[] style(String verdict) {
+    public static String[] style(String verdict) {
         return switch (verdict) {
             case "stable" -> new String[] {"#b7e4c7", "ok"};
             case "NaN" -> new String[] {"#d7263d", "NaN"};

@@ -57,13 +57,15 @@ public final class WorkPrecisionPlots {
         for (Map.Entry<String, List<SweepPoint>> e : byScene.entrySet()) {
             String ref = e.getValue().stream().map(SweepPoint::reference).filter(r -> !r.isEmpty()).findFirst().orElse("");
             String against = ref.startsWith("closedForm:") ? "closed form " + ref.substring(11) : "tightest setting " + ref.replace("self:", "");
-            n += plot(e.getValue(), SweepPoint::maxError, e.getKey() + ": whole-run error vs " + against,
-                    "max error over the run (px)", dir.resolve(stem(e.getKey()) + "-error"), cost, costTitle);
-            n += plot(e.getValue(), SweepPoint::finalError, e.getKey() + ": final-time error vs " + against,
-                    "error at the final time (px)", dir.resolve(stem(e.getKey()) + "-final"), cost, costTitle);
-            n += plot(e.getValue(), SweepPoint::energyDrift, e.getKey() + ": energy drift vs cost",
+            // Short titles (the scene and the figure): XChart centres a title over the plot area, beside the
+            // legend, and clips what does not fit; the reference goes on the y axis.
+            n += plot(e.getValue(), SweepPoint::maxError, e.getKey() + ": whole-run error",
+                    "max error (px) vs " + against, dir.resolve(stem(e.getKey()) + "-error"), cost, costTitle);
+            n += plot(e.getValue(), SweepPoint::finalError, e.getKey() + ": final-time error",
+                    "final error (px) vs " + against, dir.resolve(stem(e.getKey()) + "-final"), cost, costTitle);
+            n += plot(e.getValue(), SweepPoint::energyDrift, e.getKey() + ": energy drift",
                     "max |E - E0| / max KE", dir.resolve(stem(e.getKey()) + "-energy"), cost, costTitle);
-            n += plot(e.getValue(), SweepPoint::momentumDrift, e.getKey() + ": momentum drift vs cost",
+            n += plot(e.getValue(), SweepPoint::momentumDrift, e.getKey() + ": momentum drift",
                     "max |p - p0| / max |p|", dir.resolve(stem(e.getKey()) + "-momentum"), cost, costTitle);
         }
         return n;
@@ -111,6 +113,7 @@ public final class WorkPrecisionPlots {
         List<Integer> iterations = points.stream().map(SweepPoint::iterations).distinct().sorted().toList();
         XYChart chart = new XYChartBuilder().width(800).height(440).title(title)
                 .xAxisTitle(costTitle).yAxisTitle(yTitle).build();
+        chart.getStyler().setChartTitleFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.BOLD, 12));
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
@@ -121,17 +124,20 @@ public final class WorkPrecisionPlots {
             double[] xs = ps.stream().mapToDouble(cost).toArray();
             double[] ys = ps.stream().mapToDouble(y).toArray();
             var s = chart.addSeries(line.getKey(), xs, ys);
-            boolean oracle = !ps.get(0).engine().startsWith("emini");
-            // The double flavour's points (engine emini-double) as squares beside the float engine's circles.
-            s.setMarker(oracle ? SeriesMarkers.DIAMOND : ps.get(0).engine().equals("emini") ? SeriesMarkers.CIRCLE
-                    : SeriesMarkers.SQUARE);
+            String engine = ps.get(0).engine();
+            boolean oracle = !engine.startsWith("emini");
+            // Emini circles (its double flavour, emini-double, squares), pymunk diamonds dashed, Box2D
+            // triangles dotted: one colour per iteration count.
+            s.setMarker(!oracle ? (engine.equals("emini") ? SeriesMarkers.CIRCLE : SeriesMarkers.SQUARE)
+                    : engine.equals("box2d") ? SeriesMarkers.TRIANGLE_UP : SeriesMarkers.DIAMOND);
             java.awt.Color c = COLOURS[iterations.indexOf(ps.get(0).iterations()) % COLOURS.length];
             s.setLineColor(c);
             s.setMarkerColor(c);
             if (oracle) {
                 // The oracle's lines dashed: the same colour is the same iteration count.
+                float[] dashes = engine.equals("box2d") ? new float[] {2f, 3f} : new float[] {6f, 4f}; // flavour: float (AWT's)
                 s.setLineStyle(new java.awt.BasicStroke(1.6f, java.awt.BasicStroke.CAP_BUTT, // flavour: float (AWT's)
-                        java.awt.BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f)); // flavour: float (AWT's)
+                        java.awt.BasicStroke.JOIN_MITER, 10f, dashes, 0f)); // flavour: float (AWT's)
             }
         }
         VectorGraphicsEncoder.saveVectorGraphic(chart, stem.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);

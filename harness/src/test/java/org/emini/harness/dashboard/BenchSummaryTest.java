@@ -91,6 +91,21 @@ class BenchSummaryTest {
     }
 
     @Test
+    void withoutARunOfItsOwnThePublishedRunIsShown(@TempDir Path repo) throws IOException {
+        Path reports = repo.resolve("reports");
+        Path published = repo.resolve("bench").resolve("results");
+        Files.createDirectories(reports);
+        Files.createDirectories(published);
+        Files.writeString(published.resolve("bench.json"), REPORT);
+        Files.writeString(published.resolve("scaling.png"), "png");
+        JsonObject s = BenchSummary.read(reports, published);
+        assertEquals("../bench/results/bench.json", s.get("published").getAsString());
+        assertEquals("[\"../bench/results/scaling.png\"]", s.get("images").toString(), "links relative to the dashboard");
+        write(reports, REPORT);
+        assertFalse(BenchSummary.read(reports, published).has("published"), "the folder's own run comes first");
+    }
+
+    @Test
     void aDamagedOrForeignFileIsAnErrorNamingIt(@TempDir Path reports) throws IOException {
         Path f = write(reports, "{\"format\": \"emini-bench\", \"scenes\": [");
         IOException x = assertThrows(IOException.class, () -> BenchSummary.read(reports));

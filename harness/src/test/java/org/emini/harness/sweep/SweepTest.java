@@ -165,8 +165,13 @@ class SweepTest {
     private static final String PROJECTILE_60 = "closed-form/projectile-60hz";
 
     private static OracleBackend oracle(Path dir) {
+        return oracle(dir, "pymunk");
+    }
+
+    private static OracleBackend oracle(Path dir, String engine) {
         OracleBackend b = new OracleBackend(new OracleEnvironment(Repo.root().resolve("oracle-py"),
-                OracleEnvironment.defaultPython()), Repo.schema(), dir.resolve("oracle-serve.log"), System.err, 600);
+                OracleEnvironment.defaultPython()), Repo.schema(), dir.resolve("oracle-serve-" + engine + ".log"), System.err,
+                600, engine);
         if (b.unavailable() != null) {
             b.close();
             if (System.getenv("EMINI_REQUIRE_ORACLE") != null) {
@@ -283,6 +288,20 @@ class SweepTest {
     }
 
     @Test
+    void box2dStabilityCellsStandWhereItsContinuousCollisionCatchesTheBullet(@TempDir Path dir) throws Exception {
+        StabilityFamily speed = StabilityFamily.all().stream().filter(f -> f.name().equals("bodySpeed")).findFirst().orElseThrow();
+        try (OracleBackend box2d = oracle(dir, "box2d")) {
+            StabilityMap.Map m = StabilityMap.run(speed, box2d, List.of(60), 10);
+            assertEquals("box2d", m.engine());
+            assertTrue(box2d.versions().startsWith("Box2D 3.1.1"), box2d.versions());
+            // Box2D sweeps fast bodies against static ones: at 10^2 and 10^4 px/s (167 px a tick) the 2 px bullet
+            // stops at the 4 px wall, where pymunk's passes it.
+            assertEquals("stable", m.cells().get(0).verdict(), m.cells().toString());
+            assertEquals("stable", m.cells().get(2).verdict(), m.cells().toString());
+        }
+    }
+
+    @Test
     void anOracleThatCannotBeSetUpSaysWhyAndTheSweepGoesOn(@TempDir Path dir) throws Exception {
         Path home = Files.createDirectories(dir.resolve("oracle-py"));
         Files.copy(Repo.root().resolve("oracle-py/requirements.txt"), home.resolve("requirements.txt"));
@@ -298,7 +317,7 @@ class SweepTest {
         // The command goes on with the engine and says why pymunk is missing.
         List<String> args = List.of("sweep", "--schema", Repo.schema().toString(), "--reports", dir.resolve("r").toString(),
                 "--rates", "15..15", "--iterations", "10", "--repeats", "1", "--no-progress", "--no-plots",
-                "--oracle", home.toString(), "--python", dir.resolve("no-such-python").toString(),
+                "--oracle-dir", home.toString(), "--python", dir.resolve("no-such-python").toString(),
                 Repo.scenarios().resolve(PROJECTILE_60 + ".yaml").toString());
         assertEquals(0, Main.execute(args.toArray(String[]::new)));
         Map<String, SweepPoint> points = new PointStore(dir.resolve("r").resolve("points.jsonl")).load();
