@@ -75,27 +75,32 @@ class ComparisonTest {
         Scenario s = Scenes.valid("iso.yaml", ISOLATED);
         Trace engine = trace(t -> 10 * t, Map.of("momentum.x", t -> 10 + 0.5 * t, "momentum.y", t -> 0));
         Trace oracle = trace(t -> 10 * t, Map.of("momentum.x", t -> 10, "momentum.y", t -> 0));
-        List<Comparison.Scene> scenes = List.of(Comparison.compare(s, "pass", engine, OK, oracle, null),
-                Comparison.compare(s, "unsupported: joints", null, OK, oracle, null));
-        CompareReport.write(dir, scenes, CompareReport.Summary.of(scenes, 1), "test", "pymunk");
+        List<MultiComparison.Scene> scenes = List.of(
+                MultiComparison.merge(Map.of("pymunk", Comparison.compare(s, "pass", engine, OK, oracle, null))),
+                MultiComparison.merge(Map.of("pymunk", Comparison.compare(s, "unsupported: joints", null, OK, oracle, null))));
+        MultiComparison.write(dir, scenes, MultiComparison.Summary.of(scenes, List.of("pymunk"), 1), "test",
+                List.of("pymunk"), "pymunk");
         com.google.gson.JsonObject json = com.google.gson.JsonParser.parseString(
                 Files.readString(dir.resolve("compare.json"))).getAsJsonObject();
         assertEquals("{\"compared\":1,\"oracle only\":1}",
-                json.getAsJsonObject("summary").getAsJsonObject("status").toString());
+                json.getAsJsonObject("summary").getAsJsonObject("status").getAsJsonObject("pymunk").toString());
         com.google.gson.JsonArray out = json.getAsJsonArray("scenes");
         assertEquals("oracle only", out.get(1).getAsJsonObject().get("status").getAsString());
         java.util.Set<String> agreements = new java.util.TreeSet<>();
         java.util.Set<String> closers = new java.util.TreeSet<>();
         for (com.google.gson.JsonElement scene : out) {
             for (com.google.gson.JsonElement r : scene.getAsJsonObject().getAsJsonArray("rows")) {
-                agreements.add(r.getAsJsonObject().get("agreement").getAsString());
-                closers.add(r.getAsJsonObject().get("closer").getAsString());
+                com.google.gson.JsonObject row = r.getAsJsonObject();
+                agreements.add(row.getAsJsonObject("oracles").getAsJsonObject("pymunk").get("agreement").getAsString());
+                closers.add(row.get("closer").getAsString());
             }
         }
         assertEquals(java.util.Set.of("-", "agree", "differ"), agreements);
-        assertEquals(java.util.Set.of("-", "oracle", "tie"), closers);
-        assertTrue(Files.readString(dir.resolve("summary.md")).contains("| momentum.x | maxDrift | 0.5 | 0 | 0 (law: "
-                + "an isolated system keeps its momentum) | 0.5 | 0.21 | differ | pymunk |"));
+        // The closer is named by engine: here the oracle, a tie, or none (no reference).
+        assertEquals(java.util.Set.of("-", "pymunk", "tie"), closers);
+        String md = Files.readString(dir.resolve("summary.md"));
+        assertTrue(md.contains("| momentum.x | maxDrift | 0.5 | 0 | 0.5 | 0.21 | differ | 0 (law: an isolated system keeps "
+                + "its momentum) | pymunk < emini |"), md);
     }
 
     @Test
