@@ -114,12 +114,9 @@ final class ManifoldReuse {
         if (!(moved + sweep < tolerance) || !(turnCos > 0f)) {
             return false;
         }
-        float nx = ac * c.frameNormalX - as * c.frameNormalY;
-        float ny = as * c.frameNormalX + ac * c.frameNormalY;
-        if (b == null) {
-            nx = c.frameNormalX;
-            ny = c.frameNormalY;
-        }
+        // The normal turns with A; a landscape contact keeps it in the world, where it was found.
+        float nx = b != null ? ac * c.frameNormalX - as * c.frameNormalY : c.frameNormalX;
+        float ny = b != null ? as * c.frameNormalX + ac * c.frameNormalY : c.frameNormalY;
         c.normalX = nx;
         c.normalY = ny;
         for (int p = 0; p < c.pointCount; p++) {

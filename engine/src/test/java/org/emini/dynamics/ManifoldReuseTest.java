@@ -42,7 +42,7 @@ class ManifoldReuseTest {
 
     @Test
     void aBoxHeldByFrictionOnATiltedSlopeStaysWhereItWouldWithoutReuse() {
-        // The slope's normal is not a world axis: the reused normal must turn with the bodies' frame.
+        // The slope's normal is not a world axis: reused points must keep the box on it, not in it.
         float[] end = new float[4];
         for (int k = 0; k < 2; k++) {
             World world = world(k == 0 ? 0.1f : 0f);
@@ -68,6 +68,44 @@ class ManifoldReuseTest {
         }
         assertEquals(end[2], end[0], 0.05f);
         assertEquals(end[3], end[1], 0.05f);
+    }
+
+    @Test
+    void reusedPointsTurnWithAPairThatTurnsAsOne() {
+        // Two boxes, B resting on A, found touching; then the pair turns 0.3 rad about A's centre as
+        // one rigid piece. Their points are reused (nothing moved relative to the pair), and must
+        // turn with it: the normal, the points, the unchanged separations.
+        Body a = new Body(0f, 0f, Shape.createRectangle(60f, 10f), true);
+        Body b = new Body(0f, -14.9f, Shape.createRectangle(20f, 20f), true);
+        Contact c = new Contact();
+        c.bodyA = a;
+        c.bodyB = b;
+        c.pointCount = 2;
+        c.normalX = 0f;
+        c.normalY = -1f;
+        c.pointX0 = -10f;
+        c.pointY0 = -5.05f;
+        c.pointX1 = 10f;
+        c.pointY1 = -5.05f;
+        c.separation0 = -0.1f;
+        c.separation1 = -0.1f;
+        ManifoldReuse.remember(c, a, b, true, 0f, 0.1f);
+        float angle = 0.3f;
+        float cos = (float) Math.cos(angle);
+        float sin = (float) Math.sin(angle);
+        a.setAngle(angle);
+        b.setAngle(angle);
+        b.setPosition(-sin * -14.9f, cos * -14.9f);
+        assertTrue(ManifoldReuse.reuse(c, a, b, 0f, 0.1f));
+        assertEquals(sin, c.normalX, 1e-6f);
+        assertEquals(-cos, c.normalY, 1e-6f);
+        assertEquals(-0.1f, c.separation0, 1e-5f);
+        assertEquals(-0.1f, c.separation1, 1e-5f);
+        assertEquals(cos * -10f + sin * 5.05f, c.pointX0, 1e-4f);
+        assertEquals(sin * -10f - cos * 5.05f, c.pointY0, 1e-4f);
+        // Moved apart by more than the tolerance, the pair is collided again.
+        b.setPosition(b.getX(), b.getY() - 0.2f);
+        assertTrue(!ManifoldReuse.reuse(c, a, b, 0f, 0.1f));
     }
 
     @Test
