@@ -8,6 +8,7 @@ import org.emini.constraint.MouseJoint;
 import org.emini.constraint.Spring;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Contact;
+import org.emini.harness.metrics.DynamicBodies;
 import org.emini.io.BuildResult;
 import org.emini.io.PhyWorld;
 import org.emini.io.UnsupportedElement;
@@ -232,10 +233,9 @@ final class Play {
             double m = b.getMass();
             double vx = b.getVelocityX();
             double vy = b.getVelocityY();
-            // A body that cannot rotate has an infinite inertia and no spin (as harness DynamicBodies).
-            double w = b.canRotate() ? b.getAngularVelocity() : 0;
-            double spin = w == 0 ? 0 : b.getInertia() * w;
-            kinetic += 0.5 * m * (vx * vx + vy * vy) + 0.5 * spin * w;
+            // The harness's definitions: a body that cannot rotate has an infinite inertia and no spin.
+            double spin = DynamicBodies.spin(b);
+            kinetic += 0.5 * m * (vx * vx + vy * vy) + DynamicBodies.rotationalEnergy(b);
             if (b.isAffectedByGravity()) {
                 potential -= m * (gx * b.getX() + gy * b.getY());
             }

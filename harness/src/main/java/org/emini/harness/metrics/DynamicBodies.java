@@ -5,8 +5,12 @@ import java.util.List;
 import org.emini.dynamics.Body;
 import org.emini.harness.build.BuiltWorld;
 
-/** The dynamic bodies of a world as an array (static bodies carry no energy or momentum). */
-final class DynamicBodies {
+/**
+ * The dynamic bodies of a world as an array (static bodies carry no energy or momentum), and what a
+ * body's rotation adds to energy and angular momentum: the harness's metrics, and the World
+ * Designer's live ones, share these definitions.
+ */
+public final class DynamicBodies {
     private DynamicBodies() {
     }
 
@@ -20,8 +24,13 @@ final class DynamicBodies {
         return out.toArray(new Body[0]);
     }
 
-    /** ½·I·ω², zero for a body that cannot rotate (its inertia may be infinite). */
-    static double rotationalEnergy(Body b) {
+    /**
+     * ½·I·ω², zero for a body that cannot rotate (its inertia may be infinite).
+     *
+     * @param b a body
+     * @return its rotational kinetic energy
+     */
+    public static double rotationalEnergy(Body b) {
         double w = b.getAngularVelocity();
         if (w == 0 || !b.canRotate()) {
             return 0;
@@ -29,8 +38,13 @@ final class DynamicBodies {
         return 0.5 * b.getInertia() * w * w;
     }
 
-    /** I·ω, zero for a body that cannot rotate. */
-    static double spin(Body b) {
+    /**
+     * I·ω, zero for a body that cannot rotate.
+     *
+     * @param b a body
+     * @return its spin angular momentum
+     */
+    public static double spin(Body b) {
         double w = b.getAngularVelocity();
         return w == 0 || !b.canRotate() ? 0 : b.getInertia() * w;
     }
