@@ -93,6 +93,12 @@ final class ContactSolver {
     private int[] queue = new int[16];
     // Per contact of the narrowphase's list: its slot, or −1 when it is not solved.
     private int[] slotOf = new int[16];
+    // The colouring's input last tick: when this tick's is the same, so are slotOf and colourStart.
+    private final ContactGraphKey graph = new ContactGraphKey();
+    /** False: colour every tick afresh (tests compare the two). */
+    boolean keepColouring = true;
+    /** Colourings computed, for tests. */
+    int colourings;
 
     /**
      * Dynamic iterations' convergence measure, set by a tracked relax pass: the largest change of a
@@ -264,9 +270,14 @@ final class ContactSolver {
      * at 20 ticks/s then end tilted by 0.28 rad; by level they land flat and rebound at 35 px/s (56
      * with the contacts in the narrowphase's order). A contact that finds no colour goes to the
      * overflow group after the last one. Within a colour the slots keep the contacts' order, so the
-     * layout is deterministic.
+     * layout is deterministic, and a tick whose contact graph is the last one's keeps its colouring
+     * ({@link ContactGraphKey}).
      */
     private void colour(Contact[] all, int contactCount, SolverBodies bodies) {
+        if (graph.update(all, contactCount, bodies) && keepColouring) {
+            return;
+        }
+        colourings++;
         float[] st = bodies.state;
         int bodyCount = bodies.count;
         if (usedColours.length < bodyCount * WORDS) {
@@ -1064,6 +1075,7 @@ final class ContactSolver {
     private void ensure(int capacity) {
         if (slotOf.length < capacity) {
             slotOf = new int[Math.max(capacity, slotOf.length * 2)];
+            graph.forget();
         }
         if (contacts.length < capacity) {
             int c = Math.max(capacity, contacts.length * 2);

@@ -46,6 +46,11 @@ final class Solver {
         this.contacts.minPart = contacts;
     }
 
+    /** The contact solver, for tests of its internals. */
+    ContactSolver contactSolver() {
+        return contacts;
+    }
+
     boolean isSolving() {
         return solving;
     }
