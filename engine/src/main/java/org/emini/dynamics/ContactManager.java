@@ -2,12 +2,10 @@ package org.emini.dynamics;
 
 import java.util.Arrays;
 import org.emini.collision.BroadPhase;
-import org.emini.collision.Collider;
-import org.emini.collision.Manifold;
 import org.emini.collision.PairCallback;
 import org.emini.collision.QueryCallback;
-import org.emini.collision.Segment;
 import org.emini.internal.HeapSort;
+import org.emini.internal.WorkerPool;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
 
@@ -29,11 +27,27 @@ import org.emini.shape.Shape;
 final class ContactManager implements PairCallback, QueryCallback {
     private final Simulation world;
     private final PartKeys parts;
-    private final Collider collider = new Collider();
     // This tick's ManifoldReuse tolerance: the setting, at most half the speculative distance.
     private float reuseTolerance;
-    private final Manifold manifold = new Manifold();
-    private final Segment segment = new Segment();
+    /** The fewest contacts given to a thread: one takes about a tenth of a microsecond to collide. */
+    static final int MIN_PART = 64;
+    // One narrowphase per thread (index 0: the calling thread's), and the pool, or null.
+    private NarrowPhase[] narrow = {new NarrowPhase()};
+    private WorkerPool workers;
+    /** The fewest contacts given to a thread (MIN_PART; tests lower it to split any range). */
+    int minPart = MIN_PART;
+    // Per active contact: what its narrowphase found (NarrowPhase.ALIVE, DEAD or FILTER).
+    private byte[] outcome = new byte[64];
+    // The collide phase's inputs, as the range task reads them.
+    private BroadPhase phaseBroadPhase;
+    private float phaseDt;
+    private float phaseSpeculative;
+    private final WorkerPool.RangeTask collideTask = new WorkerPool.RangeTask() {
+        @Override
+        public void run(int worker, int from, int to) {
+            collideRange(worker, from, to);
+        }
+    };
     Contact[] contacts = new Contact[64];
     int count;
     private Contact[] pool = new Contact[64];
@@ -418,20 +432,75 @@ final class ContactManager implements PairCallback, QueryCallback {
      * Runs the narrowphase on every active contact, dropping those whose fat boxes no longer
      * overlap. The speculative margin grows with the distance the pair can close in one tick, so
      * bodies moving several pixels per tick are caught before they overlap.
+     *
+     * <p>With a worker pool the manifolds are computed by several threads ({@link NarrowPhase}: each
+     * writes only its contacts); then this thread, in contact order, asks the filters that must be
+     * asked, destroys the contacts that ended and reports touches, so the result and the events are
+     * those of one thread.
      */
     void collide(BroadPhase broadPhase, float dt, float speculative, int from) {
         reuseTolerance = Math.min(world.getSolverSettings().getManifoldReuseDistance(), 0.5f * speculative);
+        phaseBroadPhase = broadPhase;
+        phaseDt = dt;
+        phaseSpeculative = speculative;
+        if (outcome.length < activeCount) {
+            outcome = new byte[Math.max(activeCount, 2 * outcome.length)];
+        }
+        WorkerPool p = workers;
+        if (p != null) {
+            p.run(collideTask, from, activeCount, minPart);
+        } else {
+            collideRange(0, from, activeCount);
+        }
+        NarrowPhase own = narrow[0];
         int kept = from;
         for (int i = from; i < activeCount; i++) {
             Contact c = active[i];
             active[i] = null;
-            boolean alive = c.segmentSlot >= 0 ? collideLandscape(c, broadPhase, dt, speculative)
-                : collideBodies(c, broadPhase, dt, speculative);
-            if (alive) {
+            byte o = outcome[i];
+            if (o == NarrowPhase.FILTER) {
+                c.filterDirty = false;
+                o = shouldCollide(c.bodyA, c.bodyB) && filterAccepts(c.bodyA, c.bodyB)
+                    ? own.collideParts(c, parts, broadPhase, dt, speculative, reuseTolerance) : NarrowPhase.DEAD;
+            }
+            if (o == NarrowPhase.DEAD) {
+                destroy(c);
+            } else {
+                touch(c, speculative);
                 active[kept++] = c;
             }
         }
         activeCount = kept;
+        phaseBroadPhase = null;
+    }
+
+    /** The narrowphase of active contacts [from, to) by one thread: outcomes only, no shared state. */
+    private void collideRange(int worker, int from, int to) {
+        NarrowPhase np = narrow[worker];
+        BroadPhase broadPhase = phaseBroadPhase;
+        float dt = phaseDt;
+        float speculative = phaseSpeculative;
+        float tolerance = reuseTolerance;
+        Contact[] list = active;
+        byte[] out = outcome;
+        for (int i = from; i < to; i++) {
+            Contact c = list[i];
+            out[i] = c.segmentSlot >= 0 ? np.collideLandscape(c, parts, broadPhase, dt, speculative, tolerance)
+                : np.collideBodies(c, parts, broadPhase, dt, speculative, tolerance);
+        }
+    }
+
+    /** Shares the narrowphase with a pool's threads, or not (null). The results are the same either way. */
+    void setPool(WorkerPool pool) {
+        workers = pool;
+        int threads = pool == null ? 1 : pool.getThreadCount();
+        if (narrow.length < threads) {
+            NarrowPhase[] more = Arrays.copyOf(narrow, threads);
+            for (int i = narrow.length; i < threads; i++) {
+                more[i] = new NarrowPhase();
+            }
+            narrow = more;
+        }
     }
 
     /**
@@ -453,76 +522,6 @@ final class ContactManager implements PairCallback, QueryCallback {
         activeCount = kept;
     }
 
-    private boolean collideBodies(Contact c, BroadPhase broadPhase, float dt, float speculative) {
-        Body a = c.bodyA;
-        Body b = c.bodyB;
-        if (c.filterDirty) {
-            c.filterDirty = false;
-            if (!shouldCollide(a, b) || !filterAccepts(a, b)) {
-                destroy(c);
-                return false;
-            }
-        }
-        if (!broadPhase.testOverlap(parts.proxy(c.keyA), parts.proxy(c.keyB))) {
-            destroy(c);
-            return false;
-        }
-        float sweep = dt * (sweepSpeed(a) + sweepSpeed(b));
-        Shape sa = a.getShape();
-        Shape sb = b.getShape();
-        if (ManifoldReuse.reuse(c, a, b, sweep, reuseTolerance)) {
-            c.friction = sa.getFriction() * sb.getFriction();
-            c.restitution = sa.getElasticity() * sb.getElasticity();
-        } else {
-            Shape pa = part(sa, c.partA);
-            Shape pb = part(sb, c.partB);
-            collider.collide(pa, a.x, a.y, a.c, a.s, pb, b.x, b.y, b.c, b.s, speculative + sweep, manifold);
-            update(c, manifold, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity());
-            ManifoldReuse.remember(c, a, b, pa.getType() != Shape.TYPE_CIRCLE && pb.getType() != Shape.TYPE_CIRCLE, sweep,
-                reuseTolerance);
-        }
-        touch(c, speculative);
-        return true;
-    }
-
-    private boolean collideLandscape(Contact c, BroadPhase broadPhase, float dt, float speculative) {
-        Body a = c.bodyA;
-        Landscape l = c.landscape;
-        int slot = c.segmentSlot;
-        int p = parts.proxy(c.keyA);
-        if ((c.filterDirty && (!a.isDynamic() || a.sensor)) || l.stampOf(slot) != c.segmentStamp
-            || !l.overlaps(slot, broadPhase.getFatMinX(p), broadPhase.getFatMinY(p), broadPhase.getFatMaxX(p),
-                broadPhase.getFatMaxY(p))) {
-            destroy(c);
-            return false;
-        }
-        c.filterDirty = false;
-        float sweep = dt * sweepSpeed(a);
-        Shape whole = a.getShape();
-        if (ManifoldReuse.reuse(c, a, null, sweep, reuseTolerance)) {
-            c.friction = whole.getFriction() * l.getFriction();
-            c.restitution = whole.getElasticity() * l.getElasticity();
-            touch(c, speculative);
-            return true;
-        }
-        l.fill(slot, segment);
-        segment.side = c.pointCount > 0 ? c.segmentSide : 0;
-        // The body's centre of mass decides the side, for every part alike.
-        float cx = whole.getCentroidX();
-        float cy = whole.getCentroidY();
-        Shape pa = part(whole, c.partA);
-        collider.collideSegment(segment, pa, a.x, a.y, a.c, a.s, a.x + a.c * cx - a.s * cy,
-            a.y + a.s * cx + a.c * cy, speculative + sweep, manifold);
-        c.segmentSide = collider.getSegmentSide();
-        // The collider's normal points from the segment to the body; the contact's from A, the body.
-        manifold.normalX = -manifold.normalX;
-        manifold.normalY = -manifold.normalY;
-        update(c, manifold, whole.getFriction() * l.getFriction(), whole.getElasticity() * l.getElasticity());
-        ManifoldReuse.remember(c, a, null, pa.getType() != Shape.TYPE_CIRCLE, sweep, reuseTolerance);
-        touch(c, speculative);
-        return true;
-    }
-
     /** Starts touching at zero separation, stops beyond the speculative distance; reports both. */
     private void touch(Contact c, float speculative) {
         int n = c.pointCount;
@@ -536,54 +535,4 @@ final class ContactManager implements PairCallback, QueryCallback {
         }
     }
 
-    private static float sweepSpeed(Body b) {
-        if (!b.awake) {
-            return 0f;
-        }
-        float vx = b.vx < 0f ? -b.vx : b.vx;
-        float vy = b.vy < 0f ? -b.vy : b.vy;
-        float w = b.w < 0f ? -b.w : b.w;
-        // |v| ≤ |vx| + |vy|: a cheap, conservative bound.
-        return vx + vy + w * b.getShape().getBoundingRadius();
-    }
-
-    private static void update(Contact c, Manifold m, float friction, float restitution) {
-        int oldCount = c.pointCount;
-        float n0 = c.normalImpulse0;
-        float n1 = c.normalImpulse1;
-        float t0 = c.tangentImpulse0;
-        float t1 = c.tangentImpulse1;
-        int id0 = c.id0;
-        int id1 = c.id1;
-        c.pointCount = m.pointCount;
-        c.normalX = m.normalX;
-        c.normalY = m.normalY;
-        c.friction = friction;
-        c.restitution = restitution;
-        for (int p = 0; p < m.pointCount; p++) {
-            int key = m.id[p];
-            if (p == 0) {
-                c.pointX0 = m.pointX[0];
-                c.pointY0 = m.pointY[0];
-                c.separation0 = m.separation[0];
-                c.id0 = key;
-            } else {
-                c.pointX1 = m.pointX[1];
-                c.pointY1 = m.pointY[1];
-                c.separation1 = m.separation[1];
-                c.id1 = key;
-            }
-            // Carry the impulse of the same feature pair over for warm starting.
-            float ni = 0f;
-            float ti = 0f;
-            if (oldCount > 0 && key == id0) {
-                ni = n0;
-                ti = t0;
-            } else if (oldCount > 1 && key == id1) {
-                ni = n1;
-                ti = t1;
-            }
-            c.setImpulses(p, ni, ti, 0f);
-        }
-    }
 }

@@ -10,16 +10,17 @@ import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
 /**
- * The contact solve shared among threads ({@link Simulation#setWorkerCount}) gives the results of one
- * thread bit for bit: every colour is split among the threads (the smallest part lowered to one
- * contact), in the scene that uses every element, with fixed and dynamic iterations, and in a pile
- * with impacts that runs the hot relax passes.
+ * The narrowphase and the contact solve shared among threads ({@link Simulation#setWorkerCount}) give
+ * the results of one thread bit for bit: the narrowphase's contacts and every colour are split among
+ * the threads (the smallest part lowered to one contact), in the scene that uses every element, with
+ * fixed and dynamic iterations, and in a pile with impacts that runs the hot relax passes. The
+ * application's collision filter is still asked on the thread that ticks.
  */
 class WorkerCountTest {
     private static long everything(boolean dynamicIterations, int workers, int ticks) {
         EverythingScene scene = new EverythingScene(dynamicIterations);
         scene.world.setWorkerCount(workers);
-        ((Simulation) scene.world).solver.setMinParallelPart(1);
+        ((Simulation) scene.world).setMinParallelPart(1);
         try {
             scene.run(ticks);
             return scene.hash();
@@ -41,7 +42,7 @@ class WorkerCountTest {
         World world = new World();
         world.setTicksPerSecond(60);
         world.setWorkerCount(workers);
-        ((Simulation) world).solver.setMinParallelPart(1);
+        ((Simulation) world).setMinParallelPart(1);
         try {
             Scenes.ground(world, 0f, 2000f);
             Scenes.pyramid(world, 15, 20f);
@@ -65,6 +66,33 @@ class WorkerCountTest {
         long one = pile(1);
         assertEquals(one, pile(2));
         assertEquals(one, pile(4));
+    }
+
+    @Test
+    void theCollisionFilterIsAskedOnTheTickingThreadOnly() {
+        World world = new World();
+        world.setTicksPerSecond(60);
+        world.setWorkerCount(2);
+        ((Simulation) world).setMinParallelPart(1);
+        Thread ticking = Thread.currentThread();
+        int[] asked = new int[2];
+        world.setCollisionFilter((a, b) -> {
+            asked[Thread.currentThread() == ticking ? 0 : 1]++;
+            return true;
+        });
+        try {
+            Scenes.ground(world, 0f, 2000f);
+            Body[] boxes = Scenes.pyramid(world, 8, 20f);
+            for (int t = 0; t < 120; t++) {
+                // A layer change makes the filter of each of the box's contacts be asked again.
+                boxes[t % boxes.length].setCollisionLayers(t % 2 == 0 ? 2 : 4);
+                world.tick();
+            }
+        } finally {
+            world.setWorkerCount(1);
+        }
+        assertTrue(asked[0] > 120, "asked on the ticking thread: " + asked[0]);
+        assertEquals(0, asked[1], "asked on a worker thread");
     }
 
     @Test
