@@ -139,6 +139,17 @@ final class ContactSolver {
             passRange(worker, from, to);
         }
     };
+    // The prepare that prepareTask runs.
+    private Contact[] prepareContacts;
+    private Softness prepareSoft;
+    private Softness prepareStaticSoft;
+    private float prepareCondition;
+    private final WorkerPool.RangeTask prepareTask = new WorkerPool.RangeTask() {
+        @Override
+        public void run(int worker, int from, int to) {
+            prepareRange(from, to);
+        }
+    };
     private final WorkerPool.RangeTask warmTask = new WorkerPool.RangeTask() {
         @Override
         public void run(int worker, int from, int to) {
@@ -165,9 +176,28 @@ final class ContactSolver {
      */
     void prepare(Contact[] all, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft, float maxCondition) {
         ensure(contactCount);
-        float[] st = bodies.state;
         colour(all, contactCount, bodies);
-        for (int ci = 0; ci < contactCount; ci++) {
+        prepareContacts = all;
+        passBodies = bodies;
+        prepareSoft = soft;
+        prepareStaticSoft = staticSoft;
+        prepareCondition = maxCondition;
+        if (pool != null) {
+            pool.run(prepareTask, 0, contactCount, minPart);
+        } else {
+            prepareRange(0, contactCount);
+        }
+        prepareContacts = null;
+    }
+
+    /** Builds the constraints of contacts [from, to) of the narrowphase's list (each writes only its slot). */
+    private void prepareRange(int from, int to) {
+        Contact[] all = prepareContacts;
+        float[] st = passBodies.state;
+        Softness soft = prepareSoft;
+        Softness staticSoft = prepareStaticSoft;
+        float maxCondition = prepareCondition;
+        for (int ci = from; ci < to; ci++) {
             int k = slotOf[ci];
             if (k < 0) {
                 continue;

@@ -29,6 +29,18 @@ final class Solver {
     private int lastIterationCount;
 
     private final Simulation world;
+    /** The fewest bodies worth a thread in the position integration (each takes a few nanoseconds). */
+    static final int MIN_BODIES = 256;
+    private WorkerPool pool;
+    private int minBodies = MIN_BODIES;
+    // The substep that integrateTask integrates over.
+    private float substep;
+    private final WorkerPool.RangeTask integrateTask = new WorkerPool.RangeTask() {
+        @Override
+        public void run(int worker, int from, int to) {
+            bodies.integratePositions(substep, from, to);
+        }
+    };
 
     Solver(Simulation world) {
         this.world = world;
@@ -36,14 +48,25 @@ final class Solver {
         continuous = new ContinuousSolver(world);
     }
 
-    /** Shares the contact passes with a pool's threads, or not (null). */
+    /** Shares the contact passes and the position integration with a pool's threads, or not (null). */
     void setPool(WorkerPool pool) {
+        this.pool = pool;
         contacts.setPool(pool);
     }
 
-    /** The fewest contacts of a colour given to a thread (tests split every colour with 1). */
+    /** The fewest contacts of a colour (and bodies) given to a thread (tests split every colour with 1). */
     void setMinParallelPart(int contacts) {
         this.contacts.minPart = contacts;
+        minBodies = contacts;
+    }
+
+    private void integratePositions(float h) {
+        if (pool != null) {
+            substep = h;
+            pool.run(integrateTask, 1, bodies.count, minBodies);
+        } else {
+            bodies.integratePositions(h, 1, bodies.count);
+        }
     }
 
     /** The contact solver, for tests of its internals. */
@@ -153,7 +176,7 @@ final class Solver {
                 }
                 contacts.solve(sb, ctx);
             }
-            sb.integratePositions(h);
+            integratePositions(h);
             if (!converged) {
                 float change = 0f;
                 for (int c = 0; c < cn; c++) {

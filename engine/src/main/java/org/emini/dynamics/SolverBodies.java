@@ -148,10 +148,13 @@ final class SolverBodies {
         }
     }
 
-    /** x ← x + h·v and q ← q·rot(h·ω) for every moving body (symplectic Euler, second half). */
-    void integratePositions(float h) {
+    /**
+     * x ← x + h·v and q ← q·rot(h·ω) for the moving bodies in slots [from, to) (symplectic Euler,
+     * second half); each body's update is its own, so ranges may run on different threads.
+     */
+    void integratePositions(float h, int from, int to) {
         float[] st = state;
-        for (int o = STRIDE, end = count * STRIDE; o < end; o += STRIDE) {
+        for (int o = from * STRIDE, end = to * STRIDE; o < end; o += STRIDE) {
             float dx = h * st[o + VX];
             float dy = h * st[o + VY];
             st[o + X] += dx;
