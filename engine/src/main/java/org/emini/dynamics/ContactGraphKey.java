@@ -9,7 +9,9 @@ import static org.emini.dynamics.SolverBodies.STRIDE;
  * bodies' solver slots (or none when it does not touch, or has no body B), per body whether its
  * inverse mass is zero and whether it moves. The colouring is a function of these alone, so a tick
  * whose key equals the last one's may keep the last colouring; in a settled pile that is every tick,
- * and the colouring's breadth-first search and colour search then cost nothing.
+ * and the colouring's breadth-first search and colour search then cost nothing. The colouring
+ * records the key as it walks the same contacts and bodies, so a graph that keeps changing pays only
+ * the comparison, which stops at the first difference.
  */
 final class ContactGraphKey {
     private int[] pairs = new int[32];
@@ -17,50 +19,70 @@ final class ContactGraphKey {
     private int contactCount = -1;
     private int bodyCount = -1;
 
-    /**
-     * Records this tick's key.
-     *
-     * @return true when it equals the key recorded before (and that one was not {@link #forget forgotten})
-     */
-    boolean update(Contact[] all, int contactCount, SolverBodies bodies) {
-        float[] st = bodies.state;
+    /** The key of a contact's first body: its slot, or −1 when it does not touch. */
+    static int first(Contact c) {
+        return c.pointCount == 0 ? -1 : c.bodyA.solverIndex;
+    }
+
+    /** The key of a contact's second body: its slot, or −1 for a landscape contact. */
+    static int second(Contact c) {
+        return c.bodyB == null ? -1 : c.bodyB.solverIndex;
+    }
+
+    /** The key of a body's slot: bit 0 for zero inverse mass, bit 1 when it moves. */
+    static byte kind(float[] st, int slot) {
+        float im = st[slot * STRIDE + IM];
+        float ii = st[slot * STRIDE + II];
+        return (byte) ((im == 0f ? 1 : 0) | (im != 0f || ii != 0f ? 2 : 0));
+    }
+
+    /** Whether this tick's graph is the one recorded last (false when none is recorded). */
+    boolean matches(Contact[] all, int contactCount, SolverBodies bodies) {
         int bodyTotal = bodies.count;
-        boolean same = contactCount == this.contactCount && bodyTotal == this.bodyCount;
-        if (pairs.length < 2 * contactCount) {
-            pairs = new int[Math.max(2 * contactCount, 2 * pairs.length)];
-            same = false;
+        if (contactCount != this.contactCount || bodyTotal != this.bodyCount) {
+            return false;
         }
-        if (kinds.length < bodyTotal) {
-            kinds = new byte[Math.max(bodyTotal, 2 * kinds.length)];
-            same = false;
+        float[] st = bodies.state;
+        byte[] k = kinds;
+        for (int i = 0; i < bodyTotal; i++) {
+            if (k[i] != kind(st, i)) {
+                return false;
+            }
         }
         int[] p = pairs;
         for (int ci = 0; ci < contactCount; ci++) {
             Contact c = all[ci];
-            int a = c.pointCount == 0 ? -1 : c.bodyA.solverIndex;
-            int b = c.bodyB == null ? -1 : c.bodyB.solverIndex;
-            if (p[2 * ci] != a || p[2 * ci + 1] != b) {
-                same = false;
-                p[2 * ci] = a;
-                p[2 * ci + 1] = b;
+            if (p[2 * ci] != first(c) || p[2 * ci + 1] != second(c)) {
+                return false;
             }
         }
-        byte[] k = kinds;
-        for (int i = 0; i < bodyTotal; i++) {
-            float im = st[i * STRIDE + IM];
-            float ii = st[i * STRIDE + II];
-            byte kind = (byte) ((im == 0f ? 1 : 0) | (im != 0f || ii != 0f ? 2 : 0));
-            if (k[i] != kind) {
-                same = false;
-                k[i] = kind;
-            }
-        }
-        this.contactCount = contactCount;
-        this.bodyCount = bodyTotal;
-        return same;
+        return true;
     }
 
-    /** Makes the next {@link #update} answer false (the colouring it guards was lost). */
+    /** Starts recording a graph of these sizes; {@link #pair} and {@link #body} then fill it in. */
+    void begin(int contactCount, int bodyCount) {
+        if (pairs.length < 2 * contactCount) {
+            pairs = new int[Math.max(2 * contactCount, 2 * pairs.length)];
+        }
+        if (kinds.length < bodyCount) {
+            kinds = new byte[Math.max(bodyCount, 2 * kinds.length)];
+        }
+        this.contactCount = contactCount;
+        this.bodyCount = bodyCount;
+    }
+
+    /** Records contact ci's bodies ({@link #first}, {@link #second}). */
+    void pair(int ci, int first, int second) {
+        pairs[2 * ci] = first;
+        pairs[2 * ci + 1] = second;
+    }
+
+    /** Records a body's {@link #kind}. */
+    void body(int slot, byte kind) {
+        kinds[slot] = kind;
+    }
+
+    /** Makes the next {@link #matches} answer false (the colouring it guards was lost). */
     void forget() {
         contactCount = -1;
     }

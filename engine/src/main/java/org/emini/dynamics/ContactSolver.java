@@ -304,10 +304,11 @@ final class ContactSolver {
      * ({@link ContactGraphKey}).
      */
     private void colour(Contact[] all, int contactCount, SolverBodies bodies) {
-        if (graph.update(all, contactCount, bodies) && keepColouring) {
+        if (keepColouring && graph.matches(all, contactCount, bodies)) {
             return;
         }
         colourings++;
+        graph.begin(contactCount, bodies.count);
         float[] st = bodies.state;
         int bodyCount = bodies.count;
         if (usedColours.length < bodyCount * WORDS) {
@@ -331,6 +332,7 @@ final class ContactSolver {
         for (int ci = 0; ci < contactCount; ci++) {
             Contact c = all[ci];
             colourOf[ci] = -1;
+            graph.pair(ci, ContactGraphKey.first(c), ContactGraphKey.second(c));
             if (c.pointCount == 0) {
                 continue;
             }
@@ -444,6 +446,7 @@ final class ContactSolver {
         int[] q = queue;
         int tail = 0;
         for (int i = 0; i < bodyCount; i++) {
+            graph.body(i, ContactGraphKey.kind(st, i));
             if (i == 0 || !moves(st, i)) {
                 depth[i] = 0;
                 q[tail++] = i;
