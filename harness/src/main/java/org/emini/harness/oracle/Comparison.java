@@ -175,6 +175,12 @@ public final class Comparison {
                 if (any.has(f[0]) && !covered.contains(f[0])) {
                     rows.add(aggregate(f[0], f[1], engine, oracleTrace, samples, laws, judged, incomplete));
                 }
+                // The same figure of the pairs an expectation names (between), after the world's.
+                for (String c : any.metricChannels()) {
+                    if (Channels.isPair(c) && Channels.base(c).equals(f[0])) {
+                        rows.add(aggregate(c, f[1], engine, oracleTrace, samples, laws, judged, incomplete));
+                    }
+                }
             }
             if (!settings.chaotic()) {
                 for (String b : any.bodies()) {
@@ -375,7 +381,8 @@ public final class Comparison {
      * The tolerance on the engine–oracle difference of a channel when the scene states none (scale: the
      * largest |value| of the channel in either trace). Documented in scenarios/README.md.
      */
-    public static double defaultTolerance(String channel, double scale) {
+    public static double defaultTolerance(String pairOrChannel, double scale) {
+        String channel = Channels.base(pairOrChannel);
         String[] bc = Channels.bodyChannel(channel);
         if (bc != null) {
             return switch (bc[1]) {
@@ -464,7 +471,7 @@ public final class Comparison {
 
         /** The law for a channel's figure, or null. */
         String of(String channel) {
-            return switch (channel) {
+            return switch (Channels.base(channel)) {
                 case "penetration.max", "penetration.mean" -> "law: rigid bodies do not overlap";
                 case "tunnelling.count" -> "law: no body passes through a wall";
                 case "constraintError.max", "constraintError.mean" -> "law: joints hold exactly";
