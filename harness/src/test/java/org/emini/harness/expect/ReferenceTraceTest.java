@@ -7,12 +7,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.emini.harness.Repo;
 import org.emini.harness.Scenes;
 import org.emini.harness.load.Problem;
+import org.emini.harness.load.ScenarioFiles;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.report.TraceWriter;
 import org.emini.harness.run.ScenarioRunner;
 import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.Status;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.SceneScaling;
 import org.junit.jupiter.api.Test;
@@ -76,6 +79,24 @@ class ReferenceTraceTest {
     }
 
     @Test
+    void theLibrarysReferenceScenePassesAndFailsWhenItsRunDiffers(@TempDir Path dir) throws Exception {
+        Path scene = Repo.scenarios().resolve("joints/double-pendulum-reference.yaml");
+        SceneResult r = ScenarioRunner.run(Scenes.loader().load(scene).scenario(), n -> { });
+        assertEquals(Status.PASS, r.status(), r.message() + " " + r.verdicts());
+        // The same scene under 20% more gravity swings faster: tens of px from pymunk's stored run.
+        Files.copy(scene.resolveSibling("double-pendulum-reference.pymunk.trace.json"),
+                dir.resolve("double-pendulum-reference.pymunk.trace.json"));
+        String text = Files.readString(scene).replace("world: {ticksPerSecond: 60}", "world: {ticksPerSecond: 60, gravity: [0, 120]}");
+        ScenarioLoader.Loaded heavier = load(dir, "double-pendulum-reference.yaml", text);
+        assertTrue(heavier.ok(), heavier.problems().toString());
+        SceneResult f = ScenarioRunner.run(heavier.scenario(), n -> { });
+        assertEquals(Status.FAIL, f.status());
+        assertFalse(f.verdicts().get(0).passed());
+        assertTrue(f.verdicts().get(0).measured() > 10, f.verdicts().get(0).detail());
+        assertTrue(f.verdicts().get(3).passed(), "the arms still hold: only the comparison fails");
+    }
+
+    @Test
     void aScaledRunScalesItsReference(@TempDir Path dir) throws Exception {
         reference(dir);
         Scenario s = load(dir, "same.yaml", drop(100, "0.05", AGAINST)).scenario();
@@ -111,5 +132,8 @@ class ReferenceTraceTest {
                 "    - {metric: 'body.b*.y', minus: {trace: traces/ref.trace.json}, of: maxAbs, atMost: 1}")));
         assertEquals("minus: {trace} takes one body's channel, not a group", group.message());
         assertNotNull(load(dir, "ok.yaml", drop(100, "0.05", AGAINST)).scenario());
+        // A folder run does not take the stored traces for scenes.
+        assertFalse(ScenarioFiles.isScene(dir.resolve("traces/ref.trace.json")));
+        assertTrue(ScenarioFiles.isScene(dir.resolve("ref.json")));
     }
 }
