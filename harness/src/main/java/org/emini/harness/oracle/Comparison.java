@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.emini.harness.closedform.ClosedForm;
+import org.emini.harness.metrics.PenetrationPair;
 import org.emini.harness.run.Trace;
 import org.emini.harness.scenario.ActionSpec;
 import org.emini.harness.scenario.BodySpec;
@@ -82,10 +83,18 @@ public final class Comparison {
      * @param settings the scene's oracle settings
      * @param closedForm the closed-form model's name, or null
      * @param rows the table
+     * @param enginePairs the engine's penetration per pair of bodies (its trace's, deepest first), or null
+     * @param oraclePairs the oracle's, or null
      */
     public record Scene(String scene, String file, String category, CompareStatus status, String note,
                         String engineStatus, OracleScene oracle, OracleSettings settings, String closedForm,
-                        List<Row> rows) {
+                        List<Row> rows, List<PenetrationPair> enginePairs, List<PenetrationPair> oraclePairs) {
+
+        /** A scene without penetration per pair (no trace on either side). */
+        public Scene(String scene, String file, String category, CompareStatus status, String note,
+                     String engineStatus, OracleScene oracle, OracleSettings settings, String closedForm, List<Row> rows) {
+            this(scene, file, category, status, note, engineStatus, oracle, settings, closedForm, rows, null, null);
+        }
     }
 
     /**
@@ -204,7 +213,8 @@ public final class Comparison {
             status = CompareStatus.ERROR;
         }
         return new Scene(s.name(), s.file(), s.category(), status, String.join("; ", notes), engineStatus, oracle,
-                settings, model, rows);
+                settings, model, rows, engine != null ? engine.penetrationPairs() : null,
+                oracleTrace != null ? oracleTrace.penetrationPairs() : null);
     }
 
     /** Why two traces of the same scene cannot be compared sample by sample, or null. */
