@@ -1,6 +1,5 @@
 package org.emini.harness.load;
 
-import com.google.gson.JsonParseException;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -53,8 +52,9 @@ final class ReferenceTraces {
             trace = TraceReader.read(file).trace();
         } catch (IOException e) {
             return new Found(null, "the reference trace " + shown + " cannot be read: " + IoText.describe(e), false);
-        } catch (JsonParseException | IllegalStateException | UnsupportedOperationException | NullPointerException
-                 | ClassCastException | NumberFormatException e) {
+        } catch (RuntimeException e) {
+            // Gson's and the reader's complaints about a document that is JSON but not a trace (a missing or
+            // mistyped field): the file's fault, named as such.
             return new Found(null, "the reference trace " + shown + " is not an emini-trace: " + e.getMessage(), false);
         }
         if (!trace.has(channel)) {
