@@ -37,8 +37,12 @@ final class ReferenceTraces {
      * @param sceneFile the scene file (as shown: relative to the working folder, or absolute)
      */
     static Found read(Path sceneFile, String written, String channel) {
-        Path folder = sceneFile.toAbsolutePath().getParent();
-        Path file = folder.resolve(written).normalize();
+        Path file;
+        try {
+            file = sceneFile.toAbsolutePath().getParent().resolve(written).normalize();
+        } catch (java.nio.file.InvalidPathException e) {
+            return new Found(null, "the reference trace " + written + " is not a file name: " + e.getReason(), false);
+        }
         String shown = written + " (" + file + ")";
         Trace trace;
         try {

@@ -128,6 +128,9 @@ class ReferenceTraceTest {
         Problem broken = Scenes.onlyProblem(load(dir, "b.yaml", drop(100, "0.05",
                 "    - {metric: body.ball.y, minus: {trace: traces/broken.trace.json}, of: maxAbs, atMost: 1}")));
         assertTrue(broken.message().contains("is not an emini-trace"), broken.message());
+        Problem nul = Scenes.onlyProblem(load(dir, "n.yaml", drop(100, "0.05",
+                "    - {metric: body.ball.y, minus: {trace: \"a\\0b\"}, of: maxAbs, atMost: 1}")));
+        assertTrue(nul.message().contains("is not a file name"), nul.message());
         Problem group = Scenes.onlyProblem(load(dir, "g.yaml", drop(100, "0.05",
                 "    - {metric: 'body.b*.y', minus: {trace: traces/ref.trace.json}, of: maxAbs, atMost: 1}")));
         assertEquals("minus: {trace} takes one body's channel, not a group", group.message());
