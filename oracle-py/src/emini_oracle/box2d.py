@@ -378,6 +378,7 @@ def run_scene(scene: Scene, ticks=None, timing=None):
     if timing is not None:
         timing["loop"] = time.perf_counter() - loop_start
     built.unsupported, built.approximations = w.unsupported, w.approximations
+    trace.pairs = metric_classes.penetration_pairs(metrics)
     doc = trace.to_json(built)
     doc["source"] = "box2d"
     doc["oracle"] = {**versions(), "settings": w.settings}

@@ -11,6 +11,7 @@ import math
 import pymunk
 
 from .build import Built, flatten, local_aabb
+from .scene import LANDSCAPE, group_matches
 
 _TYPE_ORDER = {pymunk.Circle: 0, pymunk.Segment: 1, pymunk.Poly: 2}
 
@@ -141,10 +142,25 @@ class Penetration(Metric):
     """For every pair the space holds a contact (arbiter) for, the narrow phase is run again on the
     current poses; points = contact points with distance < 0, max = the deepest, mean = their mean.
 
-    The pairs are those between a `begin` and a `separate` callback (Chipmunk's touching arbiters)."""
+    The pairs are those between a `begin` and a `separate` callback (Chipmunk's touching arbiters).
+
+    Each overlapping point also goes to its pair of bodies, named by the scene (the landscape is the party
+    `landscape`, numbered after every body): the run's figures per pair (`pairs()`, harness PairPenetration)
+    and the channels of the scene's pair filters (`between`)."""
 
     def __init__(self, built: Built, spec, snapshot: Snapshot):
         self.pairs = {}
+        names = list(built.bodies)
+        self.names = names + [LANDSCAPE]
+        self.party = {}
+        for i, n in enumerate(names):
+            for shape in built.shapes.get(n, ()):
+                self.party[id(shape)] = i
+        for shape in built.shapes.get("$landscape", ()):
+            self.party[id(shape)] = len(names)
+        self.filters = [([group_matches(a, n) for n in self.names], [group_matches(b, n) for n in self.names])
+                        for a, b in getattr(spec, "pairs", ())]
+        self.run = {}  # (party, party) -> [deepest, sum of depths, points, samples]
 
         def begin(arbiter, space, data):
             a, b = arbiter.shapes
@@ -164,14 +180,53 @@ class Penetration(Metric):
     def sample(self, tick):
         deepest = total = 0.0
         points = 0
+        sample = {}
         for a, b in self.pairs.values():
+            pa, pb = self.party.get(id(a)), self.party.get(id(b))
+            key = (min(pa, pb), max(pa, pb)) if pa is not None and pb is not None else None
             for d in _collide_distances(a, b):
                 if d < 0:
                     points += 1
                     total -= d
                     if -d > deepest:
                         deepest = -d
-        return [deepest, total / points if points else 0.0, float(points)]
+                    if key is not None:
+                        s = sample.setdefault(key, [0.0, 0.0, 0])
+                        s[0] = max(s[0], -d)
+                        s[1] -= d
+                        s[2] += 1
+        for key, s in sample.items():
+            r = self.run.setdefault(key, [0.0, 0.0, 0, 0])
+            r[0] = max(r[0], s[0])
+            r[1] += s[1]
+            r[2] += s[2]
+            r[3] += 1
+        out = [deepest, total / points if points else 0.0, float(points)]
+        for in_a, in_b in self.filters:
+            fmax = fsum = 0.0
+            fpoints = 0
+            for (pa, pb), s in sample.items():
+                if (in_a[pa] and in_b[pb]) or (in_b[pa] and in_a[pb]):
+                    fmax = max(fmax, s[0])
+                    fsum += s[1]
+                    fpoints += s[2]
+            out.extend([fmax, fsum / fpoints if fpoints else 0.0, float(fpoints)])
+        return out
+
+    def pair_figures(self):
+        """Every pair that overlapped at a sample, deepest first (then by name), as the trace writes them."""
+        out = [{"a": self.names[pa], "b": self.names[pb], "max": r[0], "mean": r[1] / r[2], "samples": r[3]}
+               for (pa, pb), r in self.run.items()]
+        out.sort(key=lambda p: (-p["max"], p["a"], p["b"]))
+        return out
+
+
+def penetration_pairs(metrics):
+    """The penetration metric's pairs (for the trace's penetrationPairs), or None without one."""
+    for m in metrics:
+        if isinstance(m, Penetration):
+            return m.pair_figures()
+    return None
 
 
 class ConstraintError(Metric):

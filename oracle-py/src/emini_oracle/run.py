@@ -30,6 +30,7 @@ class Trace:
         self.ticks = []
         self.body_rows = []
         self.metric_rows = []
+        self.pairs = None  # penetration per pair of bodies over the run (the penetration metric's)
 
     def to_json(self, built: Built):
         h = self.scene.world.timestep
@@ -52,6 +53,8 @@ class Trace:
                 out["bodies"][name]["sleeping"] = [1 if row[i][len(BODY_FIELDS)] else 0 for row in self.body_rows]
         for c, channel in enumerate(self.channels):
             out["metrics"][channel] = [_finite(row[c]) for row in self.metric_rows]
+        if self.pairs:
+            out["penetrationPairs"] = [dict(p, max=_finite(p["max"]), mean=_finite(p["mean"])) for p in self.pairs]
         # Fields a trace reader ignores unless it knows them (harness/README.md, Trace format).
         out["unsupported"] = [n.to_json() for n in built.unsupported]
         out["approximations"] = [n.to_json() for n in built.approximations]
@@ -186,6 +189,7 @@ def run_scene(scene: Scene, ticks=None, timing=None):
         timing["loop"] = time.perf_counter() - loop_start
     if area is not None:
         area.report()
+    trace.pairs = metric_classes.penetration_pairs(metrics)
     return trace.to_json(built), built
 
 

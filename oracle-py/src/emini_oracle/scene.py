@@ -36,6 +36,21 @@ METRIC_CHANNELS = {
     "jointLimits": ["jointLimits.angle", "jointLimits.translation"],
 }
 BODY_QUANTITIES = ("x", "y", "angle", "vx", "vy", "omega", "speed", "displacement", "turn")
+LANDSCAPE = "landscape"  # the landscape as one party of a penetration pair
+PAIR_QUANTITIES = ("max", "mean", "points")
+
+
+def pair_channel(quantity, a, b):
+    """penetration.Q narrowed to the pairs between a and b (harness Channels.pair)."""
+    return f"penetration.{quantity}({a}, {b})"
+
+
+def base_channel(channel):
+    """A channel without its pair filter (harness Channels.base)."""
+    open_at = channel.find("(")
+    if channel.startswith("penetration.") and open_at > 0 and channel.endswith(")"):
+        return channel[:open_at]
+    return channel
 
 
 class SceneError(Exception):
@@ -169,9 +184,10 @@ class MetricSpec:
     walls: list = field(default_factory=list)  # str (body name) or ((x, y), (x, y))
     bodies: list = field(default_factory=list)
     whole_shape: bool = False  # tunnelling points: shape (every vertex watched, not only the centre)
+    pairs: list = field(default_factory=list)  # penetration: the pair filters (a, b) expectations read (between)
 
     def channels(self):
-        return METRIC_CHANNELS[self.kind]
+        return METRIC_CHANNELS[self.kind] + [pair_channel(q, a, b) for a, b in self.pairs for q in PAIR_QUANTITIES]
 
 
 @dataclass
@@ -292,6 +308,7 @@ def body_channel(channel):
 
 
 def metric_of(channel):
+    channel = base_channel(channel) if isinstance(channel, str) else channel
     for kind, chans in METRIC_CHANNELS.items():
         if channel in chans:
             return kind
@@ -324,7 +341,7 @@ def scene_files(paths):
 
 def is_scene(f: Path):
     n = f.name
-    return n.endswith((".yaml", ".yml", ".json")) and not n.endswith(".schema.json")
+    return n.endswith((".yaml", ".yml", ".json")) and not n.endswith((".schema.json", ".trace.json", ".expect.yaml"))
 
 
 class Loader:
@@ -428,6 +445,8 @@ class _Reader:
         self.shown = shown
         self.problems = []
         self.shapes = {}
+        self.generators = set()  # generator names: a bare one in an expectation is a group
+        self.has_landscape = False
 
     def problem(self, path, message):
         self.problems.append(f"{self.shown}: {path}: {message}")
@@ -460,6 +479,8 @@ class _Reader:
         if closed_form is not None:
             self.check_body_refs(closed_form, "$.reference.closedForm", names)
         run = root["run"]
+        self.generators = {g["name"] for g in root.get("generators") or []}
+        self.has_landscape = "landscape" in root
         record, expect = self.record(run, names)
         if self.problems:
             raise SceneError("\n".join(self.problems))
@@ -607,7 +628,8 @@ class _Reader:
                     if n not in names:
                         self.problem(f"$.run.record.bodies[{i}]", f"no body named '{n}'")
                     body_names.append(n)
-        expect = list(run.get("expect") or [])
+        pairs = []
+        expect = [self.resolved(e, f"$.run.expect[{i}]", names, pairs) for i, e in enumerate(run.get("expect") or [])]
         for i, e in enumerate(expect):
             # An expectation is a request: the metric it reads exists even if record does not list it.
             needed = None
@@ -636,8 +658,42 @@ class _Reader:
                 bc = body_channel(e.get("metric", e.get("closedForm")))
                 if bc is not None and bc[0] not in body_names and "*" not in bc[0]:
                     body_names.append(bc[0])
+        if pairs:
+            metrics["penetration"].pairs = pairs
         every = float(rec["every"]) if "every" in rec else math.nan
         return Record(every, list(metrics.values()), bodies, body_names, bool(rec.get("trace", True))), expect
+
+    def group(self, name, path, names):
+        """A bare generator name stands for its bodies (NAME[*]) unless a body has that name too (harness
+        ScenarioReader.group)."""
+        if name not in self.generators:
+            return name
+        if name in names:
+            self.problem(path, f"'{name}' names both a body and the generator {name}: write {name}[*] for the "
+                               "generator's bodies, or rename the body")
+            return name
+        return name + "[*]"
+
+    def resolved(self, e, path, names, pairs):
+        """An expectation as the harness reads it: bare generator names as groups, between as a pair channel
+        (its filter added to `pairs`). The dict returned is a copy; the file's stays as written."""
+        e = dict(e)
+        if isinstance(e.get("body"), str):
+            e["body"] = self.group(e["body"], f"{path}.body", names)
+        for key in ("metric", "closedForm"):
+            bc = body_channel(e.get(key)) if isinstance(e.get(key), str) else None
+            if bc is not None:
+                e[key] = f"body.{self.group(bc[0], f'{path}.{key}', names)}.{bc[1]}"
+        between = e.get("between")
+        metric = e.get("metric")
+        if isinstance(between, list) and isinstance(metric, str) and metric.startswith("penetration."):
+            party = []
+            for i, n in enumerate(between[:2]):
+                party.append(n if n == LANDSCAPE else self.group(n, f"{path}.between[{i}]", names))
+            if tuple(party) not in pairs:
+                pairs.append(tuple(party))
+            e["metric"] = pair_channel(metric[len("penetration."):], *party)
+        return e
 
     def metric(self, m, path, names) -> MetricSpec:
         if isinstance(m, str):

@@ -141,6 +141,6 @@ final class SceneBatch implements AutoCloseable {
             msg.append("\n    ").append(p);
         }
         return new SceneResult(l.file().toString(), l.file().toString(), null, Status.ERROR, msg.toString(),
-                List.of(), List.of(), null, 0, 0, 0, 0, 0, null, -1, null);
+                List.of(), List.of(), null, 0, 0, 0, 0, 0, null, -1, null, List.of());
     }
 }

@@ -7,6 +7,7 @@ import org.emini.harness.closedform.ClosedForm;
 import org.emini.harness.run.Trace;
 import org.emini.harness.scenario.Channels;
 import org.emini.harness.scenario.ExpectationSpec;
+import org.emini.harness.scenario.ReferenceTrace;
 
 /**
  * Judges expectations on a trace. A figure that is NaN or infinite never passes.
@@ -39,9 +40,21 @@ public final class Evaluator {
                         v[i] -= m[i];
                     }
                 }
+                ReferenceTrace ref = e.minusTrace();
+                if (ref != null) {
+                    String mismatch = ref.mismatch(trace.timestep(), ticks(trace));
+                    if (mismatch != null) {
+                        return verdict(e, false, Double.NaN, mismatch);
+                    }
+                    for (int i = 0; i < v.length; i++) {
+                        v[i] -= ref.values()[i];
+                    }
+                }
                 double x = reduce(e, v, trace, window);
                 if (e.relativeTo() == null) {
-                    return bounded(e, x);
+                    Verdict b = bounded(e, x);
+                    return ref == null ? b : verdict(e, b.passed(), x, b.detail() + " (this run's " + e.channel()
+                            + " minus " + ref.channel() + " of the reference trace " + ref.file() + ")");
                 }
                 ExpectationSpec f = e.relativeTo();
                 int[] fw = window(f, trace);
@@ -333,6 +346,14 @@ public final class Evaluator {
             m = Double.isNaN(v[i]) ? Double.NaN : Math.max(m, v[i]);
         }
         return m;
+    }
+
+    private static long[] ticks(Trace trace) {
+        long[] out = new long[trace.size()];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = trace.tick(i);
+        }
+        return out;
     }
 
     private static int nearest(Trace trace, double t) {

@@ -14,14 +14,18 @@ public final class ScenarioFiles {
     }
 
     /**
-     * Whether a file name is a scene (YAML or JSON, but not the schema nor a world file's expectations,
-     * {@code *.expect.yaml}) or an original world file.
+     * Whether a file name is a scene (YAML or JSON, but not the schema, a world file's expectations,
+     * {@code *.expect.yaml}, nor a stored trace, {@code *.trace.json}, that expectations compare with) or an
+     * original world file.
      */
     public static boolean isScene(Path file) {
         String n = file.getFileName().toString();
         return (n.endsWith(".yaml") || n.endsWith(".yml") || n.endsWith(".json")) && !n.endsWith(".schema.json")
-            && !n.endsWith(EXPECT_SUFFIX) || isWorldFile(file);
+            && !n.endsWith(EXPECT_SUFFIX) && !n.endsWith(TRACE_SUFFIX) || isWorldFile(file);
     }
+
+    /** The suffix of a trace file ({@code harness run} writes them; a scene may keep one as its reference). */
+    public static final String TRACE_SUFFIX = ".trace.json";
 
     /** The suffix of the expectations file beside a world file: {@code level.phy} has {@code level.expect.yaml}. */
     public static final String EXPECT_SUFFIX = ".expect.yaml";

@@ -1,6 +1,7 @@
 package org.emini.harness.load;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -19,6 +20,7 @@ import org.emini.harness.scenario.GeneratorSpec;
 import org.emini.harness.scenario.KnownFailure;
 import org.emini.harness.scenario.MetricSpec;
 import org.emini.harness.scenario.RecordSpec;
+import org.emini.harness.scenario.ReferenceTrace;
 import org.emini.harness.scenario.RunSpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.Section;
@@ -41,6 +43,12 @@ final class ScenarioReader {
     private final Map<String, ShapeSpec> shapes = new LinkedHashMap<>();
     /** Convex parts of each shape read so far (1 for a circle or polygon). */
     private final Map<ShapeSpec, Long> convexParts = new java.util.IdentityHashMap<>();
+    /** The generators' names: a bare one in an expectation stands for its bodies ({@code NAME[*]}). */
+    private final Set<String> generators = new LinkedHashSet<>();
+    /** The penetration pair filters the expectations read ({@code between}), in order. */
+    private final Set<MetricSpec.PairSpec> pairFilters = new LinkedHashSet<>();
+    /** Whether the scene has a landscape (a party of penetration pairs). */
+    private boolean hasLandscape;
 
     ScenarioReader(String file, SourceMap sourceMap) {
         this.file = file;
@@ -82,6 +90,7 @@ final class ScenarioReader {
                 if (g == null) {
                     continue;
                 }
+                this.generators.add(g.name());
                 // Counted before expanding, so that a generator of 10^10 bodies is refused, not attempted.
                 long made = Generators.size(g);
                 if (bodies.size() + made > Limits.BODIES) {
@@ -98,6 +107,7 @@ final class ScenarioReader {
                 problem(b.path(), "duplicate body name '" + b.name() + "'");
             }
         }
+        hasLandscape = root.has("landscape");
         Map<String, Section> elements = new LinkedHashMap<>();
         for (String section : ELEMENT_SECTIONS) {
             if (root.has(section)) {
@@ -145,6 +155,13 @@ final class ScenarioReader {
                 run, closedForm, oracle, known);
         for (Budget.Excess e : Budget.check(scenario)) {
             problem(e.path(), e.message());
+        }
+        for (ExpectationSpec e : run.expect()) {
+            String mismatch = e.minusTrace() == null ? null
+                    : e.minusTrace().mismatch(world.timestep(), ReferenceTraces.sampleTicks(scenario));
+            if (mismatch != null) {
+                problem(e.path().key("minus").key("trace"), mismatch);
+            }
         }
         return problems.isEmpty() ? scenario : null;
     }
@@ -463,6 +480,9 @@ final class ScenarioReader {
                 }
             }
         }
+        if (!pairFilters.isEmpty()) {
+            metrics.put(MetricSpec.Kind.penetration, metrics.get(MetricSpec.Kind.penetration).withPairs(List.copyOf(pairFilters)));
+        }
         if (metrics.containsKey(MetricSpec.Kind.particles) && emitters.isEmpty()) {
             MetricSpec m = metrics.get(MetricSpec.Kind.particles);
             problem(m.path() != null ? m.path() : p, "the particles metric needs emitters under particles");
@@ -523,7 +543,7 @@ final class ScenarioReader {
             problem(op.key("region"), "region max must not be below min");
         }
         return new MetricSpec(kind, about[0], about[1], walls, bodies, emitters, min, max, p,
-                "shape".equals(o.path("points").asText("centre")));
+                "shape".equals(o.path("points").asText("centre")), List.of());
     }
 
     private ExpectationSpec expectation(JsonNode e, JsonPath p, Set<String> names, boolean hasClosedForm) {
@@ -555,6 +575,7 @@ final class ScenarioReader {
         };
         String channel = null;
         String minus = null;
+        ReferenceTrace minusTrace = null;
         ExpectationSpec relativeTo = null;
         String of = e.has("of") ? e.get("of").asText() : null;
         double at = num(e, "at", Double.NaN);
@@ -566,7 +587,7 @@ final class ScenarioReader {
         if (!Double.isNaN(near) && Double.isNaN(tolerance)) {
             problem(p.key("near"), "near needs a tolerance");
         }
-        String body = e.has("body") ? e.get("body").asText() : null;
+        String body = e.has("body") ? group(e.get("body").asText(), names, p.key("body")) : null;
         if (body != null && !known(body, names)) {
             problem(p.key("body"), Channels.isGroup(body) ? "'" + body + "' matches no body" : "no body named '" + body + "'");
         }
@@ -576,6 +597,10 @@ final class ScenarioReader {
             channel = e.get(k).asText();
             JsonPath cp = p.key(k);
             String[] bc = Channels.bodyChannel(channel);
+            if (bc != null) {
+                bc[0] = group(bc[0], names, cp);
+                channel = Channels.body(bc[0], bc[1]);
+            }
             if (bc == null && Channels.metricOf(channel) == null) {
                 problem(cp, "unknown channel '" + channel + "' (see scenarios/README.md, Metrics)");
             } else if (bc != null && !known(bc[0], names)) {
@@ -588,7 +613,12 @@ final class ScenarioReader {
                 problem(p.key("inOrder"), "inOrder belongs to a group's firstCrossing (metric: body.NAME*.Q, of: firstCrossing)");
             }
             bounded = bounded || inOrder;
-            if (e.has("minus")) {
+            if (e.has("between")) {
+                channel = between(e.get("between"), p.key("between"), channel, kind, names);
+            }
+            if (e.has("minus") && e.get("minus").isObject()) {
+                minusTrace = reference(e.get("minus"), p.key("minus"), channel, bc);
+            } else if (e.has("minus")) {
                 minus = e.get("minus").asText();
                 String[] mc = Channels.bodyChannel(minus);
                 if (mc == null && Channels.metricOf(minus) == null) {
@@ -625,8 +655,9 @@ final class ScenarioReader {
             }
         } else {
             if (e.has("of") || e.has("at") || e.has("relative") || e.has("crossing") || e.has("inOrder")
-                    || e.has("minus") || e.has("relativeTo")) {
-                problem(p, "of, at, relative, crossing, inOrder, minus and relativeTo belong to metric and closedForm expectations");
+                    || e.has("minus") || e.has("relativeTo") || e.has("between")) {
+                problem(p, "of, at, relative, crossing, inOrder, minus, relativeTo and between belong to metric and "
+                        + "closedForm expectations");
             }
         }
         double[] point = null;
@@ -655,7 +686,73 @@ final class ScenarioReader {
                 stable != null ? num(stable, "maxAngularSpeed", Double.NaN) : Double.NaN,
                 stable != null ? num(stable, "maxEnergyRise", Double.NaN) : Double.NaN,
                 e.has("name") ? e.get("name").asText() : null, e.has("why") ? e.get("why").asText() : null,
-                knownFailure(e.get("knownFailure")), p, crossing, inOrder, minus, relativeTo);
+                knownFailure(e.get("knownFailure")), p, crossing, inOrder, minus, relativeTo, minusTrace);
+    }
+
+    /**
+     * A body name as an expectation writes it: a bare generator name stands for the generator's bodies
+     * ({@code box} for {@code box[*]}), unless a body has that name too, which is refused as ambiguous.
+     */
+    private String group(String name, Set<String> names, JsonPath p) {
+        if (!generators.contains(name)) {
+            return name;
+        }
+        if (names.contains(name)) {
+            problem(p, "'" + name + "' names both a body and the generator " + name + ": write " + name
+                    + "[*] for the generator's bodies, or rename the body");
+            return name;
+        }
+        return name + "[*]";
+    }
+
+    /**
+     * {@code between: [A, B]}: a penetration channel narrowed to the pairs of which one body is A and the
+     * other B (names, groups, bare generator names or {@code landscape}); registers the pair filter.
+     */
+    private String between(JsonNode list, JsonPath p, String channel, ExpectationSpec.Kind kind, Set<String> names) {
+        String q = channel.startsWith("penetration.") ? channel.substring("penetration.".length()) : null;
+        if (kind != ExpectationSpec.Kind.METRIC || q == null || !Channels.PAIR_QUANTITIES.contains(q)) {
+            problem(p, "between narrows penetration.max, penetration.mean or penetration.points to pairs of bodies");
+            return channel;
+        }
+        String[] party = new String[2];
+        for (int i = 0; i < 2; i++) {
+            String n = list.get(i).asText();
+            JsonPath ip = p.index(i);
+            if (n.equals(Channels.LANDSCAPE)) {
+                if (names.contains(n) && hasLandscape) {
+                    problem(ip, "'landscape' names both a body and the scene's landscape: rename the body");
+                } else if (!names.contains(n) && !hasLandscape) {
+                    problem(ip, "the scene has no landscape");
+                }
+                party[i] = n;
+                continue;
+            }
+            party[i] = group(n, names, ip);
+            if (!known(party[i], names)) {
+                problem(ip, Channels.isGroup(party[i]) ? "'" + party[i] + "' matches no body"
+                        : "no body named '" + n + "'" + (hasLandscape ? "" : " (and the scene has no landscape)"));
+            }
+        }
+        pairFilters.add(new MetricSpec.PairSpec(party[0], party[1]));
+        return Channels.pair(q, party[0], party[1]);
+    }
+
+    /**
+     * {@code minus: {trace: FILE, channel: C}}: channel C (default the expectation's) of a stored trace,
+     * the file relative to the scene's folder. Its sampling is checked against the scene's once it is read.
+     */
+    private ReferenceTrace reference(JsonNode m, JsonPath p, String channel, String[] bc) {
+        if (bc != null && Channels.isGroup(bc[0])) {
+            problem(p, "minus: {trace} takes one body's channel, not a group");
+            return null;
+        }
+        String wanted = m.has("channel") ? m.get("channel").asText() : channel;
+        ReferenceTraces.Found found = ReferenceTraces.read(Path.of(file), m.get("trace").asText(), wanted);
+        if (found.problem() != null) {
+            problem(p.key(found.problemAtChannel() ? "channel" : "trace"), found.problem());
+        }
+        return found.trace();
     }
 
     /** The channels an expectation reads besides its own: {@code minus} and {@code relativeTo}'s. */
@@ -682,7 +779,7 @@ final class ScenarioReader {
         switch (e.kind()) {
             case METRIC:
             case CLOSED_FORM:
-                return Channels.metricOf(e.channel());
+                return Channels.metricOf(Channels.base(e.channel()));
             case NO_TUNNELLING:
                 return MetricSpec.Kind.tunnelling;
             case STABLE:

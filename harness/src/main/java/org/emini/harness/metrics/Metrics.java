@@ -26,6 +26,19 @@ public final class Metrics {
     }
 
     /**
+     * Penetration per pair of bodies over the run so far, deepest first: the penetration metric's, or an
+     * empty list when the scene did not compute penetration.
+     */
+    public static List<PenetrationPair> pairs(List<Metric> metrics) {
+        for (Metric m : metrics) {
+            if (m instanceof PenetrationMetric p) {
+                return p.pairs();
+            }
+        }
+        return List.of();
+    }
+
+    /**
      * The metric for a request.
      *
      * @throws UnsupportedElementException for a metric the engine cannot feed
@@ -39,7 +52,7 @@ public final class Metrics {
             case angularMomentum:
                 return new AngularMomentumMetric(world, spec.aboutX(), spec.aboutY());
             case penetration:
-                return new PenetrationMetric(world.world());
+                return new PenetrationMetric(world, spec);
             case tunnelling:
                 return new TunnellingMetric(world, spec);
             case stability:

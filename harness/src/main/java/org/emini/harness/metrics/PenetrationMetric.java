@@ -1,12 +1,17 @@
 package org.emini.harness.metrics;
 
+import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 import org.emini.collision.Collider;
 import org.emini.collision.Manifold;
 import org.emini.collision.Segment;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Contact;
 import org.emini.dynamics.Landscape;
+import org.emini.harness.build.BuiltWorld;
+import org.emini.harness.scenario.MetricSpec;
 import org.emini.world.World;
 import org.emini.shape.MultiShape;
 import org.emini.shape.Shape;
@@ -24,21 +29,38 @@ import org.emini.shape.Shape;
  * lets the body's position decide. The segment's neighbours in its chain (one other segment with an
  * end within {@link Landscape#JOIN_TOLERANCE}) are given to the narrow phase as the engine does, so a
  * body crossing a joint is measured against the smooth chain.
+ *
+ * <p>Each overlapping point also goes to its pair of bodies, named ({@link PairPenetration}): the run's
+ * figures per pair ({@link #pairs()}) and the channels of the scene's pair filters ({@code between}).
  */
 final class PenetrationMetric implements Metric {
     private final World world;
+    private final List<String> channels;
+    private final Map<Body, Integer> party = new IdentityHashMap<>();
+    private final PairPenetration pairs;
     private final Collider collider = new Collider();
     private final Manifold manifold = new Manifold();
     private final Segment segment = new Segment();
     private Joins joins;
 
-    PenetrationMetric(World world) {
-        this.world = world;
+    PenetrationMetric(BuiltWorld built, MetricSpec spec) {
+        this.world = built.world();
+        this.channels = spec.channels();
+        List<String> names = new ArrayList<>(built.bodies().keySet());
+        for (int i = 0; i < names.size(); i++) {
+            party.put(built.body(names.get(i)), i);
+        }
+        pairs = new PairPenetration(names, spec.pairs());
     }
 
     @Override
     public List<String> channels() {
-        return List.of("penetration.max", "penetration.mean", "penetration.points");
+        return channels;
+    }
+
+    /** Every pair that overlapped at a sample so far, deepest first. */
+    List<PenetrationPair> pairs() {
+        return pairs.pairs();
     }
 
     @Override
@@ -47,9 +69,12 @@ final class PenetrationMetric implements Metric {
         double sum = 0;
         int points = 0;
         int n = world.getContactCount();
+        pairs.begin();
         for (int i = 0; i < n; i++) {
             Contact c = world.getContact(i);
             Body a = c.getBodyA();
+            Integer pa = party.get(a);
+            Integer pb = c.isLandscape() ? Integer.valueOf(pairs.landscape()) : party.get(c.getBodyB());
             Shape sa = part(a.getShape(), c.getPartA());
             if (c.isLandscape()) {
                 int index = c.getSegment();
@@ -73,12 +98,16 @@ final class PenetrationMetric implements Metric {
                     points++;
                     sum -= s;
                     max = Math.max(max, -s);
+                    if (pa != null && pb != null) {
+                        pairs.point(pa, pb, -s);
+                    }
                 }
             }
         }
         out[offset] = max;
         out[offset + 1] = points == 0 ? 0 : sum / points;
         out[offset + 2] = points;
+        pairs.end(out, offset + 3);
     }
 
     private static Shape part(Shape shape, int part) {

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.emini.harness.closedform.ClosedForm;
+import org.emini.harness.metrics.PenetrationPair;
 import org.emini.harness.run.Trace;
 import org.emini.harness.scenario.ActionSpec;
 import org.emini.harness.scenario.BodySpec;
@@ -82,10 +83,18 @@ public final class Comparison {
      * @param settings the scene's oracle settings
      * @param closedForm the closed-form model's name, or null
      * @param rows the table
+     * @param enginePairs the engine's penetration per pair of bodies (its trace's, deepest first), or null
+     * @param oraclePairs the oracle's, or null
      */
     public record Scene(String scene, String file, String category, CompareStatus status, String note,
                         String engineStatus, OracleScene oracle, OracleSettings settings, String closedForm,
-                        List<Row> rows) {
+                        List<Row> rows, List<PenetrationPair> enginePairs, List<PenetrationPair> oraclePairs) {
+
+        /** A scene without penetration per pair (no trace on either side). */
+        public Scene(String scene, String file, String category, CompareStatus status, String note,
+                     String engineStatus, OracleScene oracle, OracleSettings settings, String closedForm, List<Row> rows) {
+            this(scene, file, category, status, note, engineStatus, oracle, settings, closedForm, rows, null, null);
+        }
     }
 
     /**
@@ -175,6 +184,12 @@ public final class Comparison {
                 if (any.has(f[0]) && !covered.contains(f[0])) {
                     rows.add(aggregate(f[0], f[1], engine, oracleTrace, samples, laws, judged, incomplete));
                 }
+                // The same figure of the pairs an expectation names (between), after the world's.
+                for (String c : any.metricChannels()) {
+                    if (Channels.isPair(c) && Channels.base(c).equals(f[0])) {
+                        rows.add(aggregate(c, f[1], engine, oracleTrace, samples, laws, judged, incomplete));
+                    }
+                }
             }
             if (!settings.chaotic()) {
                 for (String b : any.bodies()) {
@@ -198,7 +213,8 @@ public final class Comparison {
             status = CompareStatus.ERROR;
         }
         return new Scene(s.name(), s.file(), s.category(), status, String.join("; ", notes), engineStatus, oracle,
-                settings, model, rows);
+                settings, model, rows, engine != null ? engine.penetrationPairs() : null,
+                oracleTrace != null ? oracleTrace.penetrationPairs() : null);
     }
 
     /** Why two traces of the same scene cannot be compared sample by sample, or null. */
@@ -375,7 +391,8 @@ public final class Comparison {
      * The tolerance on the engine–oracle difference of a channel when the scene states none (scale: the
      * largest |value| of the channel in either trace). Documented in scenarios/README.md.
      */
-    public static double defaultTolerance(String channel, double scale) {
+    public static double defaultTolerance(String pairOrChannel, double scale) {
+        String channel = Channels.base(pairOrChannel);
         String[] bc = Channels.bodyChannel(channel);
         if (bc != null) {
             return switch (bc[1]) {
@@ -464,7 +481,7 @@ public final class Comparison {
 
         /** The law for a channel's figure, or null. */
         String of(String channel) {
-            return switch (channel) {
+            return switch (Channels.base(channel)) {
                 case "penetration.max", "penetration.mean" -> "law: rigid bodies do not overlap";
                 case "tunnelling.count" -> "law: no body passes through a wall";
                 case "constraintError.max", "constraintError.mean" -> "law: joints hold exactly";

@@ -13,6 +13,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import org.emini.harness.metrics.PenetrationPair;
 
 /**
  * The engine against several oracles at once (pymunk and Box2D v3): each oracle's {@link Comparison} of a
@@ -66,6 +67,49 @@ public final class MultiComparison {
      */
     public record Scene(Comparison.Scene first, Map<String, Comparison.Scene> byOracle, CompareStatus status,
                         List<Row> rows) {
+    }
+
+    /**
+     * A pair of bodies among the deepest overlapping ones of any engine, with each engine's figure.
+     *
+     * @param a the first body's scene name
+     * @param b the second's, or {@code landscape}
+     * @param max each engine's deepest overlap of the pair over the run (px; 0 when it never overlapped), by
+     *     engine name ({@code emini} first), for the engines that ran
+     */
+    public record PairRow(String a, String b, Map<String, Double> max) {
+    }
+
+    /** How many of each engine's deepest pairs {@link #pairs} puts side by side. */
+    static final int TOP_PAIRS = 3;
+
+    /**
+     * The deepest overlapping pairs of each engine (its {@value #TOP_PAIRS} deepest), each with every engine's
+     * figure for the same pair, deepest first; empty when no engine computed penetration.
+     */
+    public static List<PairRow> pairs(Scene s) {
+        Map<String, List<PenetrationPair>> by = new LinkedHashMap<>();
+        Comparison.Scene first = s.first();
+        if (first.enginePairs() != null) {
+            by.put(ENGINE, first.enginePairs());
+        }
+        s.byOracle().forEach((o, c) -> {
+            if (c.oraclePairs() != null) {
+                by.put(o, c.oraclePairs());
+            }
+        });
+        Map<List<String>, PairRow> rows = new LinkedHashMap<>();
+        by.values().forEach(list -> list.stream().limit(TOP_PAIRS).forEach(p ->
+                rows.computeIfAbsent(List.of(p.a(), p.b()), k -> new PairRow(p.a(), p.b(), new LinkedHashMap<>()))));
+        for (PairRow r : rows.values()) {
+            by.forEach((engine, list) -> r.max().put(engine, list.stream()
+                    .filter(p -> p.a().equals(r.a()) && p.b().equals(r.b())).mapToDouble(PenetrationPair::max)
+                    .findFirst().orElse(0)));
+        }
+        List<PairRow> out = new ArrayList<>(rows.values());
+        out.sort(Comparator.comparingDouble((PairRow r) -> -r.max().values().stream()
+                .mapToDouble(Double::doubleValue).max().orElse(0)));
+        return out;
     }
 
     /** Merges one scene's comparisons, one per oracle (in the order given). */
@@ -269,6 +313,22 @@ public final class MultiComparison {
             json.name("chaotic").value(f.settings().chaotic());
             json.name("continuousCollision").value(f.settings().continuousCollision());
             json.name("closedForm").value(f.closedForm());
+            List<PairRow> pairs = pairs(s);
+            if (!pairs.isEmpty()) {
+                json.name("penetrationPairs").beginArray();
+                for (PairRow p : pairs) {
+                    json.beginObject();
+                    json.name("a").value(p.a());
+                    json.name("b").value(p.b());
+                    json.name("max").beginObject();
+                    for (Map.Entry<String, Double> m : p.max().entrySet()) {
+                        number(json.name(m.getKey()), m.getValue());
+                    }
+                    json.endObject();
+                    json.endObject();
+                }
+                json.endArray();
+            }
             json.name("rows").beginArray();
             for (Row r : s.rows()) {
                 json.beginObject();
@@ -356,6 +416,21 @@ public final class MultiComparison {
             s.byOracle().forEach((o, c) -> md.append("; ").append(o).append(": ").append(c.status().label())
                     .append(c.note().isEmpty() ? "" : " (" + c.note() + ")"));
             md.append(").\n\n");
+            List<PairRow> pairs = pairs(s);
+            if (!pairs.isEmpty()) {
+                List<String> engines = new ArrayList<>(pairs.get(0).max().keySet());
+                md.append("Deepest overlapping pairs (px, each engine's deepest overlap of the pair over the run):\n\n| pair");
+                engines.forEach(k -> md.append(" | ").append(k));
+                md.append(" |\n|---");
+                engines.forEach(k -> md.append("|---:"));
+                md.append("|\n");
+                for (PairRow p : pairs) {
+                    md.append("| ").append(p.a()).append(" – ").append(p.b());
+                    engines.forEach(k -> md.append(" | ").append(CompareReport.fmt(p.max().get(k))));
+                    md.append(" |\n");
+                }
+                md.append('\n');
+            }
             if (s.rows().isEmpty()) {
                 continue;
             }

@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import org.emini.harness.metrics.PenetrationPair;
 import org.emini.harness.run.Trace;
 
 /**
@@ -104,7 +105,22 @@ public final class TraceReader {
             }
             trace.add(ticks.get(i).getAsLong(), row, flags);
         }
+        JsonArray pairs = doc.getAsJsonArray("penetrationPairs");
+        if (pairs != null) {
+            List<PenetrationPair> list = new ArrayList<>();
+            for (JsonElement e : pairs) {
+                JsonObject p = e.getAsJsonObject();
+                list.add(new PenetrationPair(string(p, "a"), string(p, "b"), number(p, "max"), number(p, "mean"),
+                        p.get("samples").getAsInt()));
+            }
+            trace.setPenetrationPairs(list);
+        }
         return new Read(string(doc, "scene"), string(doc, "source"), trace);
+    }
+
+    private static double number(JsonObject o, String key) {
+        JsonElement e = o.get(key);
+        return e == null || e.isJsonNull() ? Double.NaN : e.getAsDouble();
     }
 
     private static String string(JsonObject o, String key) {

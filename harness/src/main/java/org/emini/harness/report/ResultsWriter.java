@@ -85,6 +85,10 @@ public final class ResultsWriter {
         if (r.mostAsleep() >= 0) {
             json.name("mostAsleep").value(r.mostAsleep());
         }
+        if (!r.penetrationPairs().isEmpty()) {
+            json.name("penetrationPairs");
+            TraceWriter.pairs(json, r.penetrationPairs());
+        }
         if (trace != null && r.ticks() > 0) {
             json.name("trace").value(trace.toString().replace('\\', '/'));
         }

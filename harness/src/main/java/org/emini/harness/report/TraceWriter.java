@@ -7,6 +7,8 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import org.emini.harness.metrics.PenetrationPair;
 import org.emini.harness.run.Trace;
 import org.emini.harness.scenario.Channels;
 
@@ -97,8 +99,29 @@ public final class TraceWriter {
             column(json, trace.column(channel), false);
         }
         json.endObject();
+        if (!trace.penetrationPairs().isEmpty()) {
+            json.name("penetrationPairs");
+            pairs(json, trace.penetrationPairs());
+        }
         json.endObject();
         json.flush();
+    }
+
+    /** Penetration per pair: {@code [{a, b, max, mean, samples}]}, as results.json and the trace write it. */
+    static void pairs(JsonWriter json, List<PenetrationPair> pairs) throws IOException {
+        json.beginArray();
+        for (PenetrationPair p : pairs) {
+            json.beginObject();
+            json.name("a").value(p.a());
+            json.name("b").value(p.b());
+            json.name("max");
+            number(json, p.max(), false);
+            json.name("mean");
+            number(json, p.mean(), false);
+            json.name("samples").value(p.samples());
+            json.endObject();
+        }
+        json.endArray();
     }
 
     private static void column(JsonWriter json, double[] values, boolean singlePrecision) throws IOException {

@@ -124,6 +124,7 @@ public final class ScenarioRunner {
         }
         progress.accept(ticks - done);
         double runMillis = millis(System.nanoTime() - t1);
+        trace.setPenetrationPairs(Metrics.pairs(metrics));
         ClosedForm closedForm = ClosedForms.of(scenario);
         List<Verdict> verdicts = new ArrayList<>();
         for (ExpectationSpec e : scenario.run().expect()) {
@@ -271,8 +272,10 @@ public final class ScenarioRunner {
     private static SceneResult result(Scenario s, Status status, String message, List<Verdict> verdicts,
                                       List<String> stale, long ticks, double build, double run, Trace trace,
                                       int mostAsleep, ReplayRecorder replay) {
+        List<org.emini.harness.metrics.PenetrationPair> pairs = trace == null ? List.of() : trace.penetrationPairs();
         return new SceneResult(s.name(), s.file(), s.category(), status, message, verdicts, stale, s.knownFailure(),
-                s.bodies().size(), ticks, s.world().timestep(), build, run, trace, mostAsleep, replay);
+                s.bodies().size(), ticks, s.world().timestep(), build, run, trace, mostAsleep, replay,
+                pairs.subList(0, Math.min(SceneResult.TOP_PAIRS, pairs.size())));
     }
 
     private static double millis(long nanos) {

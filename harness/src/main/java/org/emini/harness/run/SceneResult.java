@@ -2,6 +2,7 @@ package org.emini.harness.run;
 
 import java.util.List;
 import org.emini.harness.expect.Verdict;
+import org.emini.harness.metrics.PenetrationPair;
 import org.emini.harness.scenario.KnownFailure;
 
 /**
@@ -24,11 +25,16 @@ import org.emini.harness.scenario.KnownFailure;
  * @param mostAsleep the most dynamic bodies asleep at one sample, or -1 when the world did not let
  *     bodies sleep (or nothing ran)
  * @param replay what the dashboard's replay draws ({@link ReplayRecorder}), or null
+ * @param penetrationPairs the pairs of bodies that overlapped deepest at the samples, deepest first (at most
+ *     {@link #TOP_PAIRS}; empty when the scene did not compute penetration)
  */
 public record SceneResult(String scene, String file, String category, Status status, String message,
                           List<Verdict> verdicts, List<String> staleKnownFailures, KnownFailure knownFailure,
                           int bodies, long ticks, double timestep, double buildMillis, double runMillis, Trace trace,
-                          int mostAsleep, ReplayRecorder replay) {
+                          int mostAsleep, ReplayRecorder replay, List<PenetrationPair> penetrationPairs) {
+
+    /** How many of the deepest pairs a result keeps (the trace keeps them all). */
+    public static final int TOP_PAIRS = 5;
 
     /** Microseconds of wall time per tick (NaN when nothing ran). */
     public double microsPerTick() {
@@ -38,6 +44,6 @@ public record SceneResult(String scene, String file, String category, Status sta
     /** The same result without its trace and replay (after they are written, to free memory). */
     public SceneResult withoutTrace() {
         return new SceneResult(scene, file, category, status, message, verdicts, staleKnownFailures, knownFailure,
-                bodies, ticks, timestep, buildMillis, runMillis, null, mostAsleep, null);
+                bodies, ticks, timestep, buildMillis, runMillis, null, mostAsleep, null, penetrationPairs);
     }
 }

@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import org.emini.harness.metrics.PenetrationPair;
 import org.emini.harness.scenario.Channels;
 
 /**
@@ -25,6 +26,8 @@ public final class Trace {
     private final double timestep;
     /** Per sample, whether each recorded body slept; null when the run did not let bodies sleep. */
     private final List<boolean[]> asleep;
+    /** Penetration per pair of bodies over the run, deepest first; empty without the penetration metric. */
+    private List<PenetrationPair> penetrationPairs = List.of();
 
     /**
      * @param timestep seconds per tick (time of a sample = tick × timestep)
@@ -89,6 +92,16 @@ public final class Trace {
         ticks.add(tick);
         rows.add(row);
         asleep.add(sleeping);
+    }
+
+    /** Penetration per pair of bodies over the run, deepest first (empty without the penetration metric). */
+    public List<PenetrationPair> penetrationPairs() {
+        return penetrationPairs;
+    }
+
+    /** Sets the run's penetration per pair (after the run, or as read from a trace file). */
+    public void setPenetrationPairs(List<PenetrationPair> pairs) {
+        penetrationPairs = List.copyOf(pairs);
     }
 
     /** Whether the samples say which bodies slept. */

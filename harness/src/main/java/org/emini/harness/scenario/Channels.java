@@ -31,6 +31,34 @@ public final class Channels {
             MetricSpec.Kind.sleeping, List.of("sleeping.count", "sleeping.fraction"),
             MetricSpec.Kind.jointLimits, List.of("jointLimits.angle", "jointLimits.translation"));
 
+    /** The name of the landscape as one party of a penetration pair ({@code between: [ball, landscape]}). */
+    public static final String LANDSCAPE = "landscape";
+
+    /** The penetration channels a pair filter ({@code between}) narrows: the quantities after {@code penetration.}. */
+    public static final List<String> PAIR_QUANTITIES = List.of("max", "mean", "points");
+
+    /**
+     * The channel of a penetration quantity narrowed to the pairs between two bodies or groups:
+     * {@code penetration.max(box[*], ground)}.
+     */
+    public static String pair(String quantity, String a, String b) {
+        return "penetration." + quantity + "(" + a + ", " + b + ")";
+    }
+
+    /**
+     * A channel without its pair filter: {@code penetration.max(box[*], ground)} gives {@code penetration.max};
+     * any other channel is returned as it is.
+     */
+    public static String base(String channel) {
+        int open = channel.indexOf('(');
+        return channel.startsWith("penetration.") && open > 0 && channel.endsWith(")") ? channel.substring(0, open) : channel;
+    }
+
+    /** Whether a channel is a penetration quantity narrowed to pairs ({@link #pair}). */
+    public static boolean isPair(String channel) {
+        return !base(channel).equals(channel);
+    }
+
     /** The metric producing a channel, or null for a body channel or an unknown name. */
     public static MetricSpec.Kind metricOf(String channel) {
         for (Map.Entry<MetricSpec.Kind, List<String>> e : OF_METRIC.entrySet()) {

@@ -31,13 +31,15 @@ import org.emini.harness.load.JsonPath;
  * @param inOrder a group's first crossings must come in the order the scene creates its bodies
  * @param minus a channel subtracted sample by sample from {@code channel} (body A against body B), or null
  * @param relativeTo a figure (a METRIC expectation without bounds) that multiplies every bound, or null
+ * @param minusTrace a stored trace's channel subtracted sample by sample from {@code channel} (this run against a
+ *     reference run), or null
  */
 public record ExpectationSpec(Kind kind, String channel, String of, double at, boolean relative, String body,
                               double[] point, double[] max, double atMost, double atLeast, double near,
                               double tolerance, double windowFrom, double windowUntil, double maxSpeed,
                               double maxAngularSpeed, double maxEnergyRise, String name, String why,
                               KnownFailure knownFailure, JsonPath path, double crossing, boolean inOrder,
-                              String minus, ExpectationSpec relativeTo) {
+                              String minus, ExpectationSpec relativeTo, ReferenceTrace minusTrace) {
 
     /** Expectation kinds. */
     public enum Kind { METRIC, CLOSED_FORM, ENDS_NEAR, STAYS_INSIDE, NO_TUNNELLING, STABLE }
@@ -47,14 +49,15 @@ public record ExpectationSpec(Kind kind, String channel, String of, double at, b
         String[] bc = channel != null ? Channels.bodyChannel(channel) : null;
         return new ExpectationSpec(kind, bc != null ? Channels.body(member, bc[1]) : channel, of, at, relative,
                 body != null ? member : null, point, max, atMost, atLeast, near, tolerance, windowFrom, windowUntil,
-                maxSpeed, maxAngularSpeed, maxEnergyRise, name, why, knownFailure, path, crossing, false, minus, relativeTo);
+                maxSpeed, maxAngularSpeed, maxEnergyRise, name, why, knownFailure, path, crossing, false, minus, relativeTo,
+                minusTrace);
     }
 
     /** The same expectation with every bound multiplied by {@code r} (for {@code relativeTo}). */
     public ExpectationSpec timesBounds(double r) {
         return new ExpectationSpec(kind, channel, of, at, relative, body, point, max, atMost * r, atLeast * r, near * r,
                 tolerance * Math.abs(r), windowFrom, windowUntil, maxSpeed, maxAngularSpeed, maxEnergyRise, name, why,
-                knownFailure, path, crossing, inOrder, minus, null);
+                knownFailure, path, crossing, inOrder, minus, null, minusTrace);
     }
 
     /** The group pattern this expectation reads ({@code body: box[*]} or {@code metric: body.box[*].y}), or null. */
@@ -74,7 +77,8 @@ public record ExpectationSpec(Kind kind, String channel, String of, double at, b
             case METRIC:
             case CLOSED_FORM:
                 out.append(kind == Kind.CLOSED_FORM ? "closedForm " : "").append(channel)
-                        .append(minus != null ? " − " + minus : "").append(' ')
+                        .append(minus != null ? " − " + minus : "")
+                        .append(minusTrace != null ? " − " + minusTrace.channel() + " of " + minusTrace.file() : "").append(' ')
                         .append(of != null ? of : "at " + at + " s");
                 if (relative) {
                     out.append(" (relative)");

@@ -78,7 +78,8 @@ public final class SceneScaling {
      * @return the power
      * @throws IllegalArgumentException for a channel this scaling does not know
      */
-    public static int lengthPower(String channel) {
+    public static int lengthPower(String pairOrChannel) {
+        String channel = Channels.base(pairOrChannel);
         String[] body = Channels.bodyChannel(channel);
         if (body != null) {
             return body[1].equals("angle") || body[1].equals("omega") || body[1].equals("turn") ? 0 : 1;
@@ -170,7 +171,7 @@ public final class SceneScaling {
                 walls.add(new MetricSpec.WallSpec(w.body(), times(w.from(), k), times(w.to(), k)));
             }
             metrics.add(new MetricSpec(m.kind(), m.aboutX() * k, m.aboutY() * k, walls, m.bodies(), m.emitters(),
-                    times(m.regionMin(), k), times(m.regionMax(), k), m.path(), m.wholeShape()));
+                    times(m.regionMin(), k), times(m.regionMax(), k), m.path(), m.wholeShape(), m.pairs()));
         }
         RecordSpec rec = r.record();
         List<ExpectationSpec> expect = new ArrayList<>();
@@ -201,7 +202,8 @@ public final class SceneScaling {
                 times(e.max(), k), e.atMost() * f, e.atLeast() * f, e.near() * f, e.tolerance() * f, e.windowFrom(),
                 e.windowUntil(), e.maxSpeed() * k, e.maxAngularSpeed(), e.maxEnergyRise() * k * k, e.name(), e.why(),
                 e.knownFailure(), e.path(), e.crossing() * (e.channel() == null ? 1 : Math.pow(k, lengthPower(e.channel()))),
-                e.inOrder(), e.minus(), e.relativeTo());
+                e.inOrder(), e.minus(), e.relativeTo(), e.minusTrace() == null ? null
+                        : e.minusTrace().times(Math.pow(k, lengthPower(e.minusTrace().channel()))));
     }
 
     private static boolean isTime(String of) {

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.emini.harness.metrics.PenetrationPair;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -57,5 +58,33 @@ class MultiComparisonTest {
         assertTrue(json.contains("\"version\": 2") && json.contains("\"ranking\": [") && json.contains("\"box2d\": {"), json);
         String md = Files.readString(dir.resolve("summary.md"));
         assertTrue(md.contains("| reference | emini | pymunk | box2d | tie |") && md.contains("pymunk < emini"), md);
+    }
+
+    @Test
+    void theDeepestPairsOfEachEngineStandSideBySideWithTheOthersFigures(@TempDir Path dir) throws Exception {
+        List<PenetrationPair> emini = List.of(new PenetrationPair("light", "heavy", 0.2, 0.15, 200),
+                new PenetrationPair("ground", "light", 0.18, 0.07, 198));
+        List<PenetrationPair> pymunk = List.of(new PenetrationPair("ground", "light", 6.3, 3, 200),
+                new PenetrationPair("light", "heavy", 4.8, 2, 200), new PenetrationPair("light", "box[3]", 3.2, 1, 50));
+        Map<String, Comparison.Scene> by = new LinkedHashMap<>();
+        by.put("pymunk", new Comparison.Scene("s", "s.yaml", null, CompareStatus.COMPARED, "", "pass", null,
+                OracleSettings.DEFAULT, null, List.of(), emini, pymunk));
+        by.put("box2d", new Comparison.Scene("s", "s.yaml", null, CompareStatus.COMPARED, "", "pass", null,
+                OracleSettings.DEFAULT, null, List.of(), emini, null));
+        MultiComparison.Scene m = MultiComparison.merge(by);
+        List<MultiComparison.PairRow> pairs = MultiComparison.pairs(m);
+        // The union of each engine's deepest, deepest first; a pair one engine never overlapped reads 0 there;
+        // box2d, which gave no pairs, has no column.
+        assertEquals(3, pairs.size(), pairs.toString());
+        assertEquals(List.of("ground", "light"), List.of(pairs.get(0).a(), pairs.get(0).b()));
+        assertEquals(Map.of("emini", 0.18, "pymunk", 6.3), pairs.get(0).max());
+        assertEquals("box[3]", pairs.get(2).b());
+        assertEquals(0.0, pairs.get(2).max().get("emini"));
+        MultiComparison.write(dir, List.of(m), MultiComparison.Summary.of(List.of(m), List.of("pymunk", "box2d"), 1),
+                "test", List.of("pymunk", "box2d"), "pymunk 7.3.1, Box2D 3.1.1");
+        String json = Files.readString(dir.resolve("compare.json"));
+        assertTrue(json.contains("\"penetrationPairs\": [") && json.contains("\"pymunk\": 6.3"), json);
+        String md = Files.readString(dir.resolve("summary.md"));
+        assertTrue(md.contains("| pair | emini | pymunk |") && md.contains("| ground – light | 0.18 | 6.3 |"), md);
     }
 }
