@@ -23,9 +23,9 @@ import org.emini.shape.Shape;
  * {@linkplain #setSimulationArea(float, float, float, float) simulation area}); update the
  * broadphase and create contacts for pairs that came close and for bodies near segments of the
  * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver
- * splits the tick into substeps, one per iteration: each substep integrates velocities,
- * warm-starts, makes one soft (position-correcting) pass over the contacts, integrates positions and
- * makes one rigid relax pass. A restitution pass ends the tick. In dynamic-iteration mode the solver
+ * splits the tick into substeps, one per iteration: each substep integrates velocities, bounces the
+ * elastic impacts that close within it (pairwise collisions), warm-starts, makes one soft
+ * (position-correcting) pass over the contacts, integrates positions and makes one rigid relax pass. In dynamic-iteration mode the solver
  * stops solving once a substep's impulses differ from those it started with by no more than
  * {@link SolverSettings#getConvergenceTolerance()} (as velocity) and no speculative gap can close
  * before the tick ends: the remaining substeps only integrate, re-applying the converged impulses

@@ -6,8 +6,9 @@ import org.emini.internal.WorkerPool;
 /**
  * The solve of one tick: the soft step of Box2D v3 (Catto's "solver2d" study) on flat copies of the
  * simulated bodies. The tick is split into substeps, one per iteration; each integrates velocities,
- * warm-starts the constraints and contacts, makes one soft (position-correcting) pass, integrates
- * positions and makes rigid relax passes. Then restitution, the constraints' finish, the continuous
+ * bounces the elastic impacts that close within it, warm-starts the constraints and contacts, makes
+ * one soft (position-correcting) pass, integrates positions and makes rigid relax passes. Then the
+ * constraints' finish, the continuous
  * pass that keeps fast bodies from passing through static ones, and the write-back with damping.
  *
  * <p>In dynamic-iteration mode the solve stops once a substep's impulses equal those it started
@@ -162,8 +163,10 @@ final class Solver {
         float tolerance = settings.getConvergenceTolerance();
         int used = 0;
         boolean converged = false;
+        float restitutionThreshold = settings.getRestitutionThreshold();
         for (int i = 0; i < n; i++) {
             sb.integrateVelocities(h);
+            contacts.impacts(sb, h, restitutionThreshold, ctx.slop, world.stepData);
             for (int c = 0; c < cn; c++) {
                 cs[c].warmStart(step);
             }
@@ -189,7 +192,6 @@ final class Solver {
                 converged = dynamicIterations && hotPasses == 0 && Math.max(change, contacts.lastChange) < tolerance;
             }
         }
-        contacts.applyRestitution(sb, settings.getRestitutionThreshold());
         contacts.storeImpulses(world.stepData, world.getHitEventThreshold());
         for (int c = 0; c < cn; c++) {
             cs[c].finish(step);
