@@ -26,7 +26,7 @@ public final class SolverSettings {
     private float restitutionThreshold = 10f;
     private float convergenceTolerance = 0.02f;
     private float impactTolerance = 5f;
-    private int impactRelaxPasses = 10;
+    private int impactRelaxPasses = 30;
     private float timeOfImpactTarget = 0.25f;
     private float substepHertzRatio = 0.25f;
     private float blockConditionLimit = 1000f;
@@ -337,7 +337,11 @@ public final class SolverSettings {
 
     /**
      * Most relax passes per substep over the contacts of bodies an impact moved (see
-     * {@link #getImpactTolerance()}). Default 10; 0 turns them off (Box2D v3's plain soft step).
+     * {@link #getImpactTolerance()}). Default 30; 0 turns them off (Box2D v3's plain soft step).
+     * Gauss–Seidel carries an impact through a column of n bodies in about n² passes: at 10, ten
+     * boxes dropped together onto the ground with elasticity 0 rebounded at 25–35% of the impact
+     * speed and a grid created overlapping spread at 136 px/s; at 30, 3–4% and 29 px/s. A pile that
+     * keeps tumbling pays for them (the tumbler benchmark about 6%).
      *
      * @return the passes
      */
