@@ -48,7 +48,13 @@ final class ContactSolver {
     // centre, the point's arm minus K times the normal (K 0 for a body without a circle there).
     private static final int CIRCLE_A = 11;
     private static final int CIRCLE_B = 12;
-    private static final int P0 = 13;
+    // The most the common impulse point may move from the tick's contact point: a fifth of the
+    // smaller part's bounding radius, so that the tick's effective masses still hold for the moved
+    // arms (unbounded, a fast pair's arms grew by tens of pixels and the solve diverged). 0 unless
+    // both bodies are dynamic and in a cluster that touches no static or kinematic body (level 0):
+    // only there is angular momentum conserved, and moving the point cost resting piles 12%.
+    private static final int SHIFT = 13;
+    private static final int P0 = 14;
     // Per-point floats, relative to the point block.
     private static final int RAX = 0;
     private static final int RAY = 1;
@@ -267,6 +273,10 @@ final class ContactSolver {
             kB = -kB;
             f[fo + CIRCLE_A] = kA;
             f[fo + CIRCLE_B] = kB;
+            f[fo + SHIFT] = mA != 0f && mB != 0f && c.bodyB != null && level[ia] == 0 && level[ib] == 0
+                ? 0.2f * Math.min(ContactManager.part(a.getShape(), c.partA).getBoundingRadius(),
+                    ContactManager.part(b.getShape(), c.partB).getBoundingRadius())
+                : 0f;
             for (int p = 0; p < c.pointCount; p++) {
                 int po = fo + P0 + p * PS;
                 float cpx = c.pointX(p);
@@ -310,6 +320,11 @@ final class ContactSolver {
                 prepareBlock(fo, mA, iA, mB, iB, nx, ny, maxCondition);
             }
         }
+    }
+
+    /** A component of the common point's shift, within ±max. */
+    private static float clampShift(float shift, float max) {
+        return shift > max ? max : (shift < -max ? -max : shift);
     }
 
     /** The radius of a body's part if it is a circle, else 0. */
@@ -580,17 +595,24 @@ final class ContactSolver {
             float vby = st[ob + VY];
             float wb = st[ob + W];
             int pc = n[io + POINTS];
+            float sx = 0f;
+            float sy = 0f;
+            float shiftMax = f[fo + SHIFT];
+            if (shiftMax != 0f) {
+                sx = clampShift(0.5f * (st[ob + DPX] - st[oa + DPX]), shiftMax);
+                sy = clampShift(0.5f * (st[ob + DPY] - st[oa + DPY]), shiftMax);
+            }
             for (int p = 0; p < pc; p++) {
                 int po = fo + P0 + p * PS;
                 float ni = f[po + NIMP];
                 float ti = f[po + TIMP];
+                float rax = f[po + RAX] + sx;
+                float ray = f[po + RAY] + sy;
+                float rbx = f[po + RBX] - sx;
+                float rby = f[po + RBY] - sy;
                 if (ni == 0f && f[po + MAXIMP] == 0f) {
                     // Not touched yet this tick: remember the approach speed just before impact,
                     // which gravity has raised since the tick began, for the hit events.
-                    float rax = f[po + RAX];
-                    float ray = f[po + RAY];
-                    float rbx = f[po + RBX];
-                    float rby = f[po + RBY];
                     f[po + RELVEL] = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
                     continue;
                 }
@@ -598,10 +620,10 @@ final class ContactSolver {
                 float py = ni * ny + ti * nx;
                 vax -= mA * px;
                 vay -= mA * py;
-                wa -= iA * (f[po + RAX] * py - f[po + RAY] * px);
+                wa -= iA * (rax * py - ray * px);
                 vbx += mB * px;
                 vby += mB * py;
-                wb += iB * (f[po + RBX] * py - f[po + RBY] * px);
+                wb += iB * (rbx * py - rby * px);
             }
             if (oa != 0) {
                 st[oa + VX] = vax;
@@ -723,6 +745,16 @@ final class ContactSolver {
             // Motion of the two bodies since the tick started.
             float dpx = st[ob + DPX] - st[oa + DPX];
             float dpy = st[ob + DPY] - st[oa + DPY];
+            // Impulses between two dynamic bodies act at one point, midway between where each body
+            // carried the contact point since the tick began, so that they change no angular
+            // momentum; with the tick's arms they turned the pair by (dpB - dpA) x P each.
+            float sx = 0f;
+            float sy = 0f;
+            float shiftMax = f[fo + SHIFT];
+            if (shiftMax != 0f) {
+                sx = clampShift(0.5f * dpx, shiftMax);
+                sy = clampShift(0.5f * dpy, shiftMax);
+            }
             float qac = st[oa + DQC];
             float qas = st[oa + DQS];
             float qbc = st[ob + DQC];
@@ -749,6 +781,14 @@ final class ContactSolver {
                     + (dpy + qbs * r1bx + qbc * r1by - qas * r1ax - qac * r1ay) * ny + f[p1 + BASE_SEP];
                 float s2 = (dpx + qbc * r2bx - qbs * r2by - qac * r2ax + qas * r2ay) * nx
                     + (dpy + qbs * r2bx + qbc * r2by - qas * r2ax - qac * r2ay) * ny + f[p2 + BASE_SEP];
+                r1ax += sx;
+                r1ay += sy;
+                r1bx -= sx;
+                r1by -= sy;
+                r2ax += sx;
+                r2ay += sy;
+                r2bx -= sx;
+                r2by -= sy;
                 // Both points touching: solve them together. A speculative point goes point by point.
                 if (s1 <= 0f && s2 <= 0f) {
                     float ms = useBias ? softMass : 1f;
@@ -807,6 +847,10 @@ final class ContactSolver {
                 float prby = qbs * rbx + qbc * rby;
                 float sep = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + (f[fo + CIRCLE_A] * qac - f[fo + CIRCLE_B] * qbc)
                     + f[po + BASE_SEP];
+                rax += sx;
+                ray += sy;
+                rbx -= sx;
+                rby -= sy;
                 float bias = 0f;
                 float massScale = 1f;
                 float impulseScale = 0f;
@@ -848,10 +892,10 @@ final class ContactSolver {
             // Friction, bounded by the normal impulse of this pass (Coulomb cone).
             for (int p = 0; p < pc; p++) {
                 int po = fo + P0 + p * PS;
-                float rax = f[po + RAX];
-                float ray = f[po + RAY];
-                float rbx = f[po + RBX];
-                float rby = f[po + RBY];
+                float rax = f[po + RAX] + sx;
+                float ray = f[po + RAY] + sy;
+                float rbx = f[po + RBX] - sx;
+                float rby = f[po + RBY] - sy;
                 float dvx = vbx - wb * rby - vax + wa * ray;
                 float dvy = vby + wb * rbx - vay - wa * rax;
                 float vt = -dvx * ny + dvy * nx;
@@ -1048,6 +1092,14 @@ final class ContactSolver {
         float qbc = st[ob + DQC];
         float qbs = st[ob + DQS];
         float circle = f[fo + CIRCLE_A] * qac - f[fo + CIRCLE_B] * qbc;
+        // Dynamic pairs: impulses at the common point, as in the passes.
+        float sx = 0f;
+        float sy = 0f;
+        float shiftMax = f[fo + SHIFT];
+        if (shiftMax != 0f) {
+            sx = clampShift(0.5f * dpx, shiftMax);
+            sy = clampShift(0.5f * dpy, shiftMax);
+        }
         int pc = n[io + POINTS];
         // The velocities the points' warm start would give (both points and friction together: a
         // face's two impulses each move the other point too).
@@ -1065,10 +1117,10 @@ final class ContactSolver {
             float py = ni * ny + ti * nx;
             uax -= mA * px;
             uay -= mA * py;
-            uwa -= iA * (f[po + RAX] * py - f[po + RAY] * px);
+            uwa -= iA * ((f[po + RAX] + sx) * py - (f[po + RAY] + sy) * px);
             ubx += mB * px;
             uby += mB * py;
-            uwb += iB * (f[po + RBX] * py - f[po + RBY] * px);
+            uwb += iB * ((f[po + RBX] - sx) * py - (f[po + RBY] - sy) * px);
         }
         // Which points bounce, and the separating speed each is sent apart at.
         boolean hit1 = false;
@@ -1082,9 +1134,13 @@ final class ContactSolver {
             float ray = f[po + RAY];
             float rbx = f[po + RBX];
             float rby = f[po + RBY];
-            float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
             float sep = (dpx + qbc * rbx - qbs * rby - qac * rax + qas * ray) * nx
                 + (dpy + qbs * rbx + qbc * rby - qas * rax - qac * ray) * ny + circle + f[po + BASE_SEP];
+            rax += sx;
+            ray += sy;
+            rbx -= sx;
+            rby -= sy;
+            float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
             // The relative speed the warm start will add at this point.
             float warm = (ubx - uwb * rby - uax + uwa * ray) * nx + (uby + uwb * rbx - uay - uwa * rax) * ny - vn;
             float approach;
@@ -1127,14 +1183,14 @@ final class ContactSolver {
             // A face lands as a whole: both points together, or the body would spin.
             int p1 = fo + P0;
             int p2 = p1 + PS;
-            float r1ax = f[p1 + RAX];
-            float r1ay = f[p1 + RAY];
-            float r1bx = f[p1 + RBX];
-            float r1by = f[p1 + RBY];
-            float r2ax = f[p2 + RAX];
-            float r2ay = f[p2 + RAY];
-            float r2bx = f[p2 + RBX];
-            float r2by = f[p2 + RBY];
+            float r1ax = f[p1 + RAX] + sx;
+            float r1ay = f[p1 + RAY] + sy;
+            float r1bx = f[p1 + RBX] - sx;
+            float r1by = f[p1 + RBY] - sy;
+            float r2ax = f[p2 + RAX] + sx;
+            float r2ay = f[p2 + RAY] + sy;
+            float r2bx = f[p2 + RBX] - sx;
+            float r2by = f[p2 + RBY] - sy;
             float g1 = -e * approach1 - ((vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny);
             float g2 = -e * approach2 - ((vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny);
             float x1 = f[fo + K11] * g1 + f[fo + K12] * g2;
@@ -1158,10 +1214,10 @@ final class ContactSolver {
                 continue;
             }
             int po = fo + P0 + p * PS;
-            float rax = f[po + RAX];
-            float ray = f[po + RAY];
-            float rbx = f[po + RBX];
-            float rby = f[po + RBY];
+            float rax = f[po + RAX] + sx;
+            float ray = f[po + RAY] + sy;
+            float rbx = f[po + RBX] - sx;
+            float rby = f[po + RBY] - sy;
             // The first point's impulse may already have sent the second one apart.
             float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
             float target = -e * (p == 0 ? approach1 : approach2);
@@ -1186,10 +1242,10 @@ final class ContactSolver {
                 continue;
             }
             int po = fo + P0 + p * PS;
-            float rax = f[po + RAX];
-            float ray = f[po + RAY];
-            float rbx = f[po + RBX];
-            float rby = f[po + RBY];
+            float rax = f[po + RAX] + sx;
+            float ray = f[po + RAY] + sy;
+            float rbx = f[po + RBX] - sx;
+            float rby = f[po + RBY] - sy;
             float vt = -(vbx - wb * rby - vax + wa * ray) * ny + (vby + wb * rbx - vay - wa * rax) * nx;
             float maxF = friction * d;
             float t = -f[po + TMASS] * vt;

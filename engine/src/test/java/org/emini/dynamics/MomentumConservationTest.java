@@ -11,9 +11,10 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Contact impulses are equal and opposite, so with gravity off linear momentum is conserved to
- * rounding. Angular momentum is conserved to first order only: within a tick each body applies the
- * impulse at its anchor fixed at the tick's start, and the anchors of the two bodies drift apart as
- * the bodies move during the substeps (the price of solving on fixed anchors, as Box2D v3 does).
+ * rounding. Angular momentum is conserved when both bodies take an impulse at the same point: the
+ * solver moves the tick's contact point with the pair (midway between where each body carried it),
+ * up to a fifth of the smaller part's bounding radius, so only pairs that slide past each other faster
+ * than that in one tick keep part of the first-order error of fixed anchors (Box2D v3's).
  */
 class MomentumConservationTest {
     @ParameterizedTest
@@ -51,7 +52,34 @@ class MomentumConservationTest {
         assertEquals(before[0], after[0], 1e-5 * scale, "px");
         assertEquals(before[1], after[1], 1e-5 * scale, "py");
         double angularScale = before[4];
-        assertEquals(before[2], after[2], 0.02 * angularScale, "L");
+        // Measured 4e-5 to 9.5e-4 of the scale (5.7e-4 to 2.3e-3 with the tick's arms, seeds 2 and 3 beyond this bound).
+        assertEquals(before[2], after[2], 1.5e-3 * angularScale, "L");
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {20, 60})
+    void spinningBoxesThatCollideOffCentreKeepAngularMomentum(int rate) {
+        World world = new World();
+        world.setTicksPerSecond(rate);
+        world.setGravity(0f, 0f);
+        Shape box = Shape.createRectangle(20f, 20f);
+        box.setFriction(0.5f);
+        Body a = new Body(-100f, 0f, box, true);
+        a.setVelocity(50f, 0f);
+        a.setAngularVelocity(2f);
+        Body b = new Body(0f, 5f, box, true);
+        b.setAngularVelocity(-1f);
+        world.addBody(a);
+        world.addBody(b);
+        double before = momentum(world)[2];
+        double worst = 0;
+        for (int t = 0; t < 5 * rate; t++) {
+            world.tick();
+            worst = Math.max(worst, Math.abs(momentum(world)[2] - before));
+        }
+        assertTrue(b.getVelocityX() > 10f, "the boxes collided");
+        // closed-form/angular-momentum-through-contact: 11.8 with the tick's arms, pymunk 2.18.
+        assertEquals(0.0, worst, 0.05, "angular momentum about the origin");
     }
 
     /** px, py, angular momentum about the origin, Σ m|v|, Σ |I ω| + m |r × v|. */
