@@ -32,49 +32,49 @@ import org.emini.internal.WorkerPool;
  */
 final class ContactSolver {
     // Per-constraint floats.
-    private static final int NX = 0;
-    private static final int NY = 1;
-    private static final int FRICTION = 2;
-    private static final int RESTITUTION = 3;
+    static final int NX = 0;
+    static final int NY = 1;
+    static final int FRICTION = 2;
+    static final int RESTITUTION = 3;
     private static final int BIAS_RATE = 4;
     private static final int MASS_SCALE = 5;
     private static final int IMPULSE_SCALE = 6;
     // Inverse of the 2×2 normal mass matrix of a two-point manifold; BLOCK is 1 when well conditioned.
-    private static final int BLOCK = 7;
-    private static final int K11 = 8;
-    private static final int K12 = 9;
-    private static final int K22 = 10;
+    static final int BLOCK = 7;
+    static final int K11 = 8;
+    static final int K12 = 9;
+    static final int K22 = 10;
     // A circle's contact point does not turn with the circle: the separation follows the circle's
     // centre, the point's arm minus K times the normal (K 0 for a body without a circle there).
-    private static final int CIRCLE_A = 11;
-    private static final int CIRCLE_B = 12;
+    static final int CIRCLE_A = 11;
+    static final int CIRCLE_B = 12;
     // The most the common impulse point may move from the tick's contact point: a fifth of the
     // smaller part's bounding radius, so that the tick's effective masses still hold for the moved
     // arms (unbounded, a fast pair's arms grew by tens of pixels and the solve diverged). 0 unless
     // both bodies are dynamic and in a cluster that touches no static or kinematic body (level 0):
     // only there is angular momentum conserved, and moving the point cost resting piles 12%.
-    private static final int SHIFT = 13;
-    private static final int P0 = 14;
+    static final int SHIFT = 13;
+    static final int P0 = 14;
     // Per-point floats, relative to the point block.
-    private static final int RAX = 0;
-    private static final int RAY = 1;
-    private static final int RBX = 2;
-    private static final int RBY = 3;
-    private static final int BASE_SEP = 4;
-    private static final int NMASS = 5;
-    private static final int TMASS = 6;
-    private static final int NIMP = 7;
-    private static final int TIMP = 8;
-    private static final int MAXIMP = 9;
-    private static final int RELVEL = 10;
+    static final int RAX = 0;
+    static final int RAY = 1;
+    static final int RBX = 2;
+    static final int RBY = 3;
+    static final int BASE_SEP = 4;
+    static final int NMASS = 5;
+    static final int TMASS = 6;
+    static final int NIMP = 7;
+    static final int TIMP = 8;
+    static final int MAXIMP = 9;
+    static final int RELVEL = 10;
     // Inverse effective normal mass (1 / NMASS, or 0): impulse to relative speed without a division.
     private static final int KN = 11;
-    private static final int PS = 12;
+    static final int PS = 12;
     static final int CS = P0 + 2 * PS;
     // Per-constraint ints.
-    private static final int BODY_A = 0;
-    private static final int BODY_B = 1;
-    private static final int POINTS = 2;
+    static final int BODY_A = 0;
+    static final int BODY_B = 1;
+    static final int POINTS = 2;
     static final int CI = 3;
 
     private float[] f = new float[16 * CS];
@@ -82,11 +82,7 @@ final class ContactSolver {
     private Contact[] contacts = new Contact[16];
     private int count;
 
-    // Slots of the contacts with elasticity, in slot order: the only ones impacts visits.
-    private int[] elastic = new int[16];
-    private int elasticCount;
-    /** Most sweeps of {@link #impacts}: a row is passed down in two whatever its order, a pinched body never stops. */
-    private static final int IMPACT_SWEEPS = 16;
+    private final ElasticImpacts impacts = new ElasticImpacts();
 
     /** Colours of the graph colouring; contacts that find none left go to the overflow group after them. */
     static final int COLOURS = 256;
@@ -200,17 +196,7 @@ final class ContactSolver {
             prepareRange(0, contactCount);
         }
         prepareContacts = null;
-        elasticCount = 0;
-        for (int k = 0; k < count; k++) {
-            if (f[k * CS + RESTITUTION] != 0f) {
-                if (elasticCount == elastic.length) {
-                    int[] grown = new int[2 * elastic.length];
-                    System.arraycopy(elastic, 0, grown, 0, elasticCount);
-                    elastic = grown;
-                }
-                elastic[elasticCount++] = k;
-            }
-        }
+        impacts.collect(f, count);
     }
 
     /** Builds the constraints of contacts [from, to) of the narrowphase's list (each writes only its slot). */
@@ -323,7 +309,7 @@ final class ContactSolver {
     }
 
     /** A component of the common point's shift, within ±max. */
-    private static float clampShift(float shift, float max) {
+    static float clampShift(float shift, float max) {
         return shift > max ? max : (shift < -max ? -max : shift);
     }
 
@@ -1037,256 +1023,9 @@ final class ContactSolver {
         return bias < -maxPush ? -maxPush : bias;
     }
 
-    /**
-     * The substep's elastic impacts, before its warm start. A point of an elastic contact that is not
-     * pushing already, approaches faster than the threshold and would close within the substep takes
-     * the impulse that sends it apart at e times its approach speed, with friction bounded by that
-     * impulse: a pairwise collision (Newton's law of restitution). Sweeps, alternately forward and
-     * backward, until no point is left to bounce: the impulse given to the next body of a row of
-     * touching bodies is that body's impact, so the row passes the velocity down as a chain of
-     * pairwise collisions does (Newton's cradle), and no impulse can add energy. A bounce aimed after
-     * the solve at the approach a contact was first seen at instead made the last balls of a row
-     * leave together (e = 1: energy from 0.49 to 7.8 times the impact's). Resting contacts keep
-     * their warm-started impulse and are left to the solve, as are the points still approaching
-     * after the last sweep (a ball pinched between two walls).
-     */
+    /** The substep's elastic impacts, before its warm start ({@link ElasticImpacts}). */
     void impacts(SolverBodies bodies, float h, float threshold, float slop, StepData step) {
-        if (elasticCount == 0) {
-            return;
-        }
-        float[] st = bodies.state;
-        for (int sweep = 0; sweep < IMPACT_SWEEPS; sweep++) {
-            boolean forward = (sweep & 1) == 0;
-            boolean bounced = false;
-            for (int i = 0; i < elasticCount; i++) {
-                bounced |= impact(st, elastic[forward ? i : elasticCount - 1 - i], h, threshold, slop, step);
-            }
-            if (!bounced) {
-                return;
-            }
-        }
-    }
-
-    /** One contact's impact (see {@link #impacts}); true when a point bounced. */
-    private boolean impact(float[] st, int k, float h, float threshold, float slop, StepData step) {
-        int fo = k * CS;
-        int io = k * CI;
-        int oa = n[io + BODY_A] * STRIDE;
-        int ob = n[io + BODY_B] * STRIDE;
-        float nx = f[fo + NX];
-        float ny = f[fo + NY];
-        float mA = st[oa + IM];
-        float iA = st[oa + II];
-        float mB = st[ob + IM];
-        float iB = st[ob + II];
-        float vax = st[oa + VX];
-        float vay = st[oa + VY];
-        float wa = st[oa + W];
-        float vbx = st[ob + VX];
-        float vby = st[ob + VY];
-        float wb = st[ob + W];
-        float dpx = st[ob + DPX] - st[oa + DPX];
-        float dpy = st[ob + DPY] - st[oa + DPY];
-        float qac = st[oa + DQC];
-        float qas = st[oa + DQS];
-        float qbc = st[ob + DQC];
-        float qbs = st[ob + DQS];
-        float circle = f[fo + CIRCLE_A] * qac - f[fo + CIRCLE_B] * qbc;
-        // Dynamic pairs: impulses at the common point, as in the passes.
-        float sx = 0f;
-        float sy = 0f;
-        float shiftMax = f[fo + SHIFT];
-        if (shiftMax != 0f) {
-            sx = clampShift(0.5f * dpx, shiftMax);
-            sy = clampShift(0.5f * dpy, shiftMax);
-        }
-        int pc = n[io + POINTS];
-        // The velocities the points' warm start would give (both points and friction together: a
-        // face's two impulses each move the other point too).
-        float uax = vax;
-        float uay = vay;
-        float uwa = wa;
-        float ubx = vbx;
-        float uby = vby;
-        float uwb = wb;
-        for (int p = 0; p < pc; p++) {
-            int po = fo + P0 + p * PS;
-            float ni = f[po + NIMP];
-            float ti = f[po + TIMP];
-            float px = ni * nx - ti * ny;
-            float py = ni * ny + ti * nx;
-            uax -= mA * px;
-            uay -= mA * py;
-            uwa -= iA * ((f[po + RAX] + sx) * py - (f[po + RAY] + sy) * px);
-            ubx += mB * px;
-            uby += mB * py;
-            uwb += iB * ((f[po + RBX] - sx) * py - (f[po + RBY] - sy) * px);
-        }
-        // Which points bounce, and the separating speed each is sent apart at.
-        boolean hit1 = false;
-        boolean hit2 = false;
-        float approach1 = 0f;
-        float approach2 = 0f;
-        float e = f[fo + RESTITUTION];
-        for (int p = 0; p < pc; p++) {
-            int po = fo + P0 + p * PS;
-            float rax = f[po + RAX];
-            float ray = f[po + RAY];
-            float rbx = f[po + RBX];
-            float rby = f[po + RBY];
-            float sep = (dpx + qbc * rbx - qbs * rby - qac * rax + qas * ray) * nx
-                + (dpy + qbs * rbx + qbc * rby - qas * rax - qac * ray) * ny + circle + f[po + BASE_SEP];
-            rax += sx;
-            ray += sy;
-            rbx -= sx;
-            rby -= sy;
-            float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-            // The relative speed the warm start will add at this point.
-            float warm = (ubx - uwb * rby - uax + uwa * ray) * nx + (uby + uwb * rbx - uay - uwa * rax) * ny - vn;
-            float approach;
-            if (sep > 0f) {
-                // Apart: a stored impulse is the last relax pass slowing the point to close the gap
-                // exactly in this substep; the approach is the speed it had before.
-                approach = vn - warm;
-                // Within the slop counts as closing: a gap closed exactly leaves the bodies touching,
-                // and a touching point takes the solve's impulse before the next substep sees it.
-                if (sep + approach * h > slop) {
-                    continue;
-                }
-            } else {
-                // Touching: a resting point's warm start takes back what gravity added this substep;
-                // it is an impact only if more than the threshold is left.
-                if (vn + warm > -threshold) {
-                    continue;
-                }
-                approach = vn;
-            }
-            if (approach > -threshold) {
-                continue;
-            }
-            if (p == 0) {
-                hit1 = true;
-                approach1 = approach;
-            } else {
-                hit2 = true;
-                approach2 = approach;
-            }
-        }
-        if (!hit1 && !hit2) {
-            return false;
-        }
-        float friction = f[fo + FRICTION];
-        float d1 = 0f;
-        float d2 = 0f;
-        boolean solved = false;
-        if (hit1 && hit2 && f[fo + BLOCK] != 0f) {
-            // A face lands as a whole: both points together, or the body would spin.
-            int p1 = fo + P0;
-            int p2 = p1 + PS;
-            float r1ax = f[p1 + RAX] + sx;
-            float r1ay = f[p1 + RAY] + sy;
-            float r1bx = f[p1 + RBX] - sx;
-            float r1by = f[p1 + RBY] - sy;
-            float r2ax = f[p2 + RAX] + sx;
-            float r2ay = f[p2 + RAY] + sy;
-            float r2bx = f[p2 + RBX] - sx;
-            float r2by = f[p2 + RBY] - sy;
-            float g1 = -e * approach1 - ((vbx - wb * r1by - vax + wa * r1ay) * nx + (vby + wb * r1bx - vay - wa * r1ax) * ny);
-            float g2 = -e * approach2 - ((vbx - wb * r2by - vax + wa * r2ay) * nx + (vby + wb * r2bx - vay - wa * r2ax) * ny);
-            float x1 = f[fo + K11] * g1 + f[fo + K12] * g2;
-            float x2 = f[fo + K12] * g1 + f[fo + K22] * g2;
-            if (x1 >= 0f && x2 >= 0f) {
-                solved = true;
-                d1 = x1;
-                d2 = x2;
-                float px = (d1 + d2) * nx;
-                float py = (d1 + d2) * ny;
-                vax -= mA * px;
-                vay -= mA * py;
-                wa -= iA * ((r1ax * ny - r1ay * nx) * d1 + (r2ax * ny - r2ay * nx) * d2);
-                vbx += mB * px;
-                vby += mB * py;
-                wb += iB * ((r1bx * ny - r1by * nx) * d1 + (r2bx * ny - r2by * nx) * d2);
-            }
-        }
-        for (int p = 0; p < pc && !solved; p++) {
-            if (p == 0 ? !hit1 : !hit2) {
-                continue;
-            }
-            int po = fo + P0 + p * PS;
-            float rax = f[po + RAX] + sx;
-            float ray = f[po + RAY] + sy;
-            float rbx = f[po + RBX] - sx;
-            float rby = f[po + RBY] - sy;
-            // The first point's impulse may already have sent the second one apart.
-            float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
-            float target = -e * (p == 0 ? approach1 : approach2);
-            float d = vn < target ? (target - vn) * f[po + NMASS] : 0f;
-            if (p == 0) {
-                d1 = d;
-            } else {
-                d2 = d;
-            }
-            float px = d * nx;
-            float py = d * ny;
-            vax -= mA * px;
-            vay -= mA * py;
-            wa -= iA * (rax * py - ray * px);
-            vbx += mB * px;
-            vby += mB * py;
-            wb += iB * (rbx * py - rby * px);
-        }
-        for (int p = 0; p < pc; p++) {
-            float d = p == 0 ? d1 : d2;
-            if (d == 0f) {
-                continue;
-            }
-            int po = fo + P0 + p * PS;
-            float rax = f[po + RAX] + sx;
-            float ray = f[po + RAY] + sy;
-            float rbx = f[po + RBX] - sx;
-            float rby = f[po + RBY] - sy;
-            float vt = -(vbx - wb * rby - vax + wa * ray) * ny + (vby + wb * rbx - vay - wa * rax) * nx;
-            float maxF = friction * d;
-            float t = -f[po + TMASS] * vt;
-            t = t < -maxF ? -maxF : (t > maxF ? maxF : t);
-            float px = -t * ny;
-            float py = t * nx;
-            vax -= mA * px;
-            vay -= mA * py;
-            wa -= iA * (rax * py - ray * px);
-            vbx += mB * px;
-            vby += mB * py;
-            wb += iB * (rbx * py - rby * px);
-            // For the hit events: the fastest approach of a point that took an impulse this tick.
-            float vn = p == 0 ? approach1 : approach2;
-            if (f[po + MAXIMP] == 0f || vn < f[po + RELVEL]) {
-                f[po + RELVEL] = vn;
-            }
-            if (d > f[po + MAXIMP]) {
-                f[po + MAXIMP] = d;
-            }
-            // The bounce replaces the point's warm start, which would otherwise push it apart again.
-            f[po + NIMP] = 0f;
-            f[po + TIMP] = 0f;
-        }
-        if (oa != 0) {
-            st[oa + VX] = vax;
-            st[oa + VY] = vay;
-            st[oa + W] = wa;
-        }
-        if (ob != 0) {
-            st[ob + VX] = vbx;
-            st[ob + VY] = vby;
-            st[ob + W] = wb;
-        }
-        // A bounce is a touch, although the points turn back just short of closing.
-        Contact c = contacts[k];
-        if (!c.touching) {
-            c.touching = true;
-            step.contactBegan(c);
-        }
-        return true;
+        impacts.run(f, n, contacts, bodies, h, threshold, slop, step);
     }
 
     /**
