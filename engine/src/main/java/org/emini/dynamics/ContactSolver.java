@@ -23,8 +23,8 @@ import org.emini.internal.WorkerPool;
  * integration, one unbiased relax pass (then more, over the contacts of bodies an impact moved:
  * {@link #relaxHot}). Contacts are not re-collided per substep; their separation is
  * updated from the bodies' motion since the tick started. Elastic impacts are pairwise collisions
- * at the start of the substep in which they close ({@link #impacts}). The relax pass removes the velocity the push-out created, so overlap is
- * resolved without adding energy.
+ * at the start of the substep in which they close ({@link #impacts}). The relax pass removes the
+ * velocity the push-out created, so overlap is resolved without adding energy.
  *
  * <p>Layout: each constraint is {@link #CS} floats (shared data then two point blocks of
  * {@link #PS} floats) plus {@link #CI} ints; a constraint's whole state sits in one or two cache
@@ -308,8 +308,15 @@ final class ContactSolver {
         }
     }
 
-    /** A component of the common point's shift, within ±max. */
-    static float clampShift(float shift, float max) {
+    /**
+     * A component of how far the common impulse point moved: half the pair's relative displacement
+     * since the tick began, within ±max (0 where the contact has no common point, max 0).
+     */
+    static float commonPointShift(float relativeDisplacement, float max) {
+        if (max == 0f) {
+            return 0f;
+        }
+        float shift = 0.5f * relativeDisplacement;
         return shift > max ? max : (shift < -max ? -max : shift);
     }
 
@@ -581,13 +588,8 @@ final class ContactSolver {
             float vby = st[ob + VY];
             float wb = st[ob + W];
             int pc = n[io + POINTS];
-            float sx = 0f;
-            float sy = 0f;
-            float shiftMax = f[fo + SHIFT];
-            if (shiftMax != 0f) {
-                sx = clampShift(0.5f * (st[ob + DPX] - st[oa + DPX]), shiftMax);
-                sy = clampShift(0.5f * (st[ob + DPY] - st[oa + DPY]), shiftMax);
-            }
+            float sx = commonPointShift(st[ob + DPX] - st[oa + DPX], f[fo + SHIFT]);
+            float sy = commonPointShift(st[ob + DPY] - st[oa + DPY], f[fo + SHIFT]);
             for (int p = 0; p < pc; p++) {
                 int po = fo + P0 + p * PS;
                 float ni = f[po + NIMP];
@@ -734,13 +736,8 @@ final class ContactSolver {
             // Impulses between two dynamic bodies act at one point, midway between where each body
             // carried the contact point since the tick began, so that they change no angular
             // momentum; with the tick's arms they turned the pair by (dpB - dpA) x P each.
-            float sx = 0f;
-            float sy = 0f;
-            float shiftMax = f[fo + SHIFT];
-            if (shiftMax != 0f) {
-                sx = clampShift(0.5f * dpx, shiftMax);
-                sy = clampShift(0.5f * dpy, shiftMax);
-            }
+            float sx = commonPointShift(dpx, f[fo + SHIFT]);
+            float sy = commonPointShift(dpy, f[fo + SHIFT]);
             float qac = st[oa + DQC];
             float qas = st[oa + DQS];
             float qbc = st[ob + DQC];

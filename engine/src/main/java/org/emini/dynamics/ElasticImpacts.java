@@ -29,7 +29,7 @@ import static org.emini.dynamics.ContactSolver.RESTITUTION;
 import static org.emini.dynamics.ContactSolver.SHIFT;
 import static org.emini.dynamics.ContactSolver.TIMP;
 import static org.emini.dynamics.ContactSolver.TMASS;
-import static org.emini.dynamics.ContactSolver.clampShift;
+import static org.emini.dynamics.ContactSolver.commonPointShift;
 import static org.emini.dynamics.SolverBodies.DPX;
 import static org.emini.dynamics.SolverBodies.DPY;
 import static org.emini.dynamics.SolverBodies.DQC;
@@ -125,13 +125,8 @@ final class ElasticImpacts {
         float qbs = st[ob + DQS];
         float circle = f[fo + CIRCLE_A] * qac - f[fo + CIRCLE_B] * qbc;
         // Dynamic pairs: impulses at the common point, as in the passes.
-        float sx = 0f;
-        float sy = 0f;
-        float shiftMax = f[fo + SHIFT];
-        if (shiftMax != 0f) {
-            sx = clampShift(0.5f * dpx, shiftMax);
-            sy = clampShift(0.5f * dpy, shiftMax);
-        }
+        float sx = commonPointShift(dpx, f[fo + SHIFT]);
+        float sy = commonPointShift(dpy, f[fo + SHIFT]);
         int pc = n[io + POINTS];
         // The velocities the points' warm start would give (both points and friction together: a
         // face's two impulses each move the other point too).

@@ -25,11 +25,11 @@ import org.emini.shape.Shape;
  * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver
  * splits the tick into substeps, one per iteration: each substep integrates velocities, bounces the
  * elastic impacts that close within it (pairwise collisions), warm-starts, makes one soft
- * (position-correcting) pass over the contacts, integrates positions and makes one rigid relax pass. In dynamic-iteration mode the solver
- * stops solving once a substep's impulses differ from those it started with by no more than
- * {@link SolverSettings#getConvergenceTolerance()} (as velocity) and no speculative gap can close
- * before the tick ends: the remaining substeps only integrate, re-applying the converged impulses
- * (warm start) so resting stacks stay put.
+ * (position-correcting) pass over the contacts, integrates positions and makes one rigid relax pass.
+ * In dynamic-iteration mode the solver stops solving once a substep's impulses differ from those it
+ * started with by no more than {@link SolverSettings#getConvergenceTolerance()} (as velocity) and
+ * no speculative gap can close before the tick ends: the remaining substeps only integrate,
+ * re-applying the converged impulses (warm start) so resting stacks stay put.
  *
  * <p>Changing the world while it ticks (from an external force, a {@link Constraint} or an event
  * listener): adding and removing bodies, constraints and the world's other elements, and replacing

@@ -8,8 +8,8 @@ import org.emini.internal.WorkerPool;
  * simulated bodies. The tick is split into substeps, one per iteration; each integrates velocities,
  * bounces the elastic impacts that close within it, warm-starts the constraints and contacts, makes
  * one soft (position-correcting) pass, integrates positions and makes rigid relax passes. Then the
- * constraints' finish, the continuous
- * pass that keeps fast bodies from passing through static ones, and the write-back with damping.
+ * constraints' finish, the continuous pass that keeps fast bodies from passing through static ones,
+ * and the write-back with damping.
  *
  * <p>In dynamic-iteration mode the solve stops once a substep's impulses equal those it started
  * from (within the convergence tolerance, as velocity) and no speculative gap can close in the rest

@@ -340,7 +340,7 @@ public final class SolverSettings {
      * {@link #getImpactTolerance()}). Default 30; 0 turns them off (Box2D v3's plain soft step).
      * Gauss–Seidel carries an impact through a column of n bodies in about n² passes: at 10, ten
      * boxes dropped together onto the ground with elasticity 0 rebounded at 25–35% of the impact
-     * speed and a grid created overlapping spread at 136 px/s; at 30, 3–4% and 29 px/s. A pile that
+     * speed and a grid created overlapping spread at 136 px/s; at 30, under 3% and 29 px/s. A pile that
      * keeps tumbling pays for them (the tumbler benchmark about 6%).
      *
      * @return the passes
