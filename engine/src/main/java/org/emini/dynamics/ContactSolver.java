@@ -248,19 +248,29 @@ final class ContactSolver {
             float vby = st[ob + VY];
             float wb = st[ob + W];
             // The point lies midway, half the separation beyond each surface (a circle has one point).
-            // A circle's arm ends on its own surface instead: rolling then ties v to ω r, where the
-            // midway point tied it to ω (r − overlap / 2) (a disc rolling down a slope lagged its
-            // closed form by 0.017 px/s as it settled into the slop).
+            // Against a circle it lies on the circle's surface instead, for both bodies: rolling then
+            // ties v to ω r, where the midway point tied it to ω (r − overlap / 2) (a disc rolling down
+            // a slope lagged its closed form by 0.017 px/s), and both bodies take the impulse at one
+            // point, or friction would turn the world (a rod striking a ball across a 40 px gap
+            // created 330 units of angular momentum when only the ball's arm was moved). Two
+            // circles keep the midpoint unless one of them cannot move.
             float half = c.pointCount > 0 ? 0.5f * c.separation0 : 0f;
-            float kA = circleRadius(a, c.partA);
-            float kB = c.bodyB != null ? circleRadius(b, c.partB) : 0f;
-            float shiftA = kA > 0f ? half : 0f;
-            float shiftB = kB > 0f ? half : 0f;
-            kB = -kB;
+            float rA = circleRadius(a, c.partA);
+            float rB = c.bodyB != null ? circleRadius(b, c.partB) : 0f;
+            float shift = 0f;
+            if (rA > 0f && (rB == 0f || mB == 0f)) {
+                shift = -half;
+            } else if (rB > 0f && (rA == 0f || mA == 0f)) {
+                shift = half;
+            }
+            // A circle's separation does not depend on its turning: its arm's projection on the
+            // normal, which the separation update adds back as the arm turns.
+            float kA = rA > 0f ? rA + half + shift : 0f;
+            float kB = rB > 0f ? -(rB + half - shift) : 0f;
             f[fo + CIRCLE_A] = kA;
             f[fo + CIRCLE_B] = kB;
             f[fo + SHIFT] = mA != 0f && mB != 0f && c.bodyB != null && level[ia] == 0 && level[ib] == 0
-                ? 0.2f * Math.min(ContactManager.part(a.getShape(), c.partA).getBoundingRadius(),
+                ? commonPointLimit(c.pointCount, ContactManager.part(a.getShape(), c.partA).getBoundingRadius(),
                     ContactManager.part(b.getShape(), c.partB).getBoundingRadius())
                 : 0f;
             for (int p = 0; p < c.pointCount; p++) {
@@ -271,13 +281,11 @@ final class ContactSolver {
                 float ray = cpy - a.y;
                 float rbx = cpx - b.x;
                 float rby = cpy - b.y;
-                if (shiftA != 0f) {
-                    rax -= shiftA * nx;
-                    ray -= shiftA * ny;
-                }
-                if (shiftB != 0f) {
-                    rbx += shiftB * nx;
-                    rby += shiftB * ny;
+                if (shift != 0f) {
+                    rax += shift * nx;
+                    ray += shift * ny;
+                    rbx += shift * nx;
+                    rby += shift * ny;
                 }
                 f[po + RAX] = rax;
                 f[po + RAY] = ray;
@@ -306,6 +314,25 @@ final class ContactSolver {
                 prepareBlock(fo, mA, iA, mB, iB, nx, ny, maxCondition);
             }
         }
+    }
+
+    /**
+     * How far the common impulse point may move from the tick's contact point. A single point takes
+     * its effective masses anew from the moved arms, so it may follow the pair up to the larger part's
+     * bounding radius (a rod's tip striking a ball crosses several ball radii in a tick); the two
+     * points of a face are solved as a block whose matrix is the tick's, which holds for moves up to a
+     * fifth of the smaller part's radius (unbounded, the everything scene reached NaN in 11 ticks).
+     */
+    static float commonPointLimit(int pointCount, float radiusA, float radiusB) {
+        return pointCount == 1 ? Math.max(radiusA, radiusB) : 0.2f * Math.min(radiusA, radiusB);
+    }
+
+    /** 1 / (the effective mass of a point along direction (dx, dy)), from its arms; 0 if nothing moves. */
+    static float pointMass(float mA, float iA, float mB, float iB, float rax, float ray, float rbx, float rby, float dx, float dy) {
+        float ra = rax * dy - ray * dx;
+        float rb = rbx * dy - rby * dx;
+        float k = mA + mB + iA * ra * ra + iB * rb * rb;
+        return k > 0f ? 1f / k : 0f;
     }
 
     /**
@@ -849,7 +876,7 @@ final class ContactSolver {
                 float dvy = vby + wb * rbx - vay - wa * rax;
                 float vn = dvx * nx + dvy * ny;
                 float old = f[po + NIMP];
-                float nm = f[po + NMASS];
+                float nm = sx != 0f || sy != 0f ? pointMass(mA, iA, mB, iB, rax, ray, rbx, rby, nx, ny) : f[po + NMASS];
                 float acc = old - nm * massScale * (vn + bias) - impulseScale * old;
                 if (acc < 0f) {
                     acc = 0f;
@@ -884,7 +911,8 @@ final class ContactSolver {
                 float vt = -dvx * ny + dvy * nx;
                 float old = f[po + TIMP];
                 float maxF = friction * f[po + NIMP];
-                float acc = old - f[po + TMASS] * vt;
+                float tm = sx != 0f || sy != 0f ? pointMass(mA, iA, mB, iB, rax, ray, rbx, rby, -ny, nx) : f[po + TMASS];
+                float acc = old - tm * vt;
                 acc = acc < -maxF ? -maxF : (acc > maxF ? maxF : acc);
                 f[po + TIMP] = acc;
                 float d = acc - old;
