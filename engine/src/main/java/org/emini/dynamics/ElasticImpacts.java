@@ -91,7 +91,7 @@ final class ElasticImpacts {
             boolean forward = (sweep & 1) == 0;
             boolean bounced = false;
             for (int i = 0; i < count; i++) {
-                bounced |= impact(f, n, contacts, st, elastic[forward ? i : count - 1 - i], h, threshold, slop, step);
+                bounced |= impact(f, n, contacts, bodies, elastic[forward ? i : count - 1 - i], h, threshold, slop, step);
             }
             if (!bounced) {
                 return;
@@ -100,8 +100,9 @@ final class ElasticImpacts {
     }
 
     /** One contact's impact (see {@link #run}); true when a point bounced. */
-    private static boolean impact(float[] f, int[] n, Contact[] contacts, float[] st, int k, float h, float threshold,
-            float slop, StepData step) {
+    private static boolean impact(float[] f, int[] n, Contact[] contacts, SolverBodies bodies, int k, float h,
+            float threshold, float slop, StepData step) {
+        float[] st = bodies.state;
         int fo = k * CS;
         int io = k * CI;
         int oa = n[io + BODY_A] * STRIDE;
@@ -118,6 +119,12 @@ final class ElasticImpacts {
         float vbx = st[ob + VX];
         float vby = st[ob + VY];
         float wb = st[ob + W];
+        float vax0 = vax;
+        float vay0 = vay;
+        float wa0 = wa;
+        float vbx0 = vbx;
+        float vby0 = vby;
+        float wb0 = wb;
         float dpx = st[ob + DPX] - st[oa + DPX];
         float dpy = st[ob + DPY] - st[oa + DPY];
         float qac = st[oa + DQC];
@@ -154,6 +161,8 @@ final class ElasticImpacts {
         boolean hit1 = false;
         boolean hit2 = false;
         float approach1 = 0f;
+        // When within the substep the first bouncing point closes its gap.
+        float contactTime = h;
         float approach2 = 0f;
         float e = f[fo + RESTITUTION];
         for (int p = 0; p < pc; p++) {
@@ -191,6 +200,10 @@ final class ElasticImpacts {
             }
             if (approach > -threshold) {
                 continue;
+            }
+            float closes = sep > 0f ? sep / -approach : 0f;
+            if (closes < contactTime) {
+                contactTime = closes;
             }
             if (p == 0) {
                 hit1 = true;
@@ -309,6 +322,17 @@ final class ElasticImpacts {
             st[ob + VX] = vbx;
             st[ob + VY] = vby;
             st[ob + W] = wb;
+        }
+        // Until the gap closes the bodies keep their old velocities: the bounce is taken at the
+        // substep's start, so each owes the difference times that time (one substep early, a head-on
+        // collision closing on a tick boundary ended 1 px from its closed form).
+        if (contactTime > 0f) {
+            if (oa != 0 && mA != 0f) {
+                bodies.owe(oa / STRIDE, (vax0 - vax) * contactTime, (vay0 - vay) * contactTime, (wa0 - wa) * contactTime);
+            }
+            if (ob != 0 && mB != 0f) {
+                bodies.owe(ob / STRIDE, (vbx0 - vbx) * contactTime, (vby0 - vby) * contactTime, (wb0 - wb) * contactTime);
+            }
         }
         // A bounce is a touch, although the points turn back just short of closing.
         Contact c = contacts[k];

@@ -68,6 +68,7 @@ final class Solver {
         } else {
             bodies.integratePositions(h, 1, bodies.count);
         }
+        bodies.owing = false;
     }
 
     /** The contact solver, for tests of its internals. */

@@ -38,6 +38,11 @@ final class SolverBodies {
     // Angular acceleration kept apart: it is the only per-body value the stride has no room for.
     float[] alpha = new float[8];
     float[] state = new float[8 * STRIDE];
+    // Motion owed by the substep's impacts (x, y, angle per slot): a bounce is taken at the substep's
+    // start but happens when the gap closes, so each body still moves with its old velocity until then.
+    private float[] owed = new float[8 * 3];
+    // Whether any slot owes motion this substep.
+    boolean owing;
     Body[] bodies = new Body[8];
     int count;
     // The kinematic bodies among them: the fast-body sweep then looks at moving bodies too.
@@ -51,6 +56,12 @@ final class SolverBodies {
             bodies = new Body[n];
             state = new float[n * STRIDE];
             alpha = new float[n];
+            owed = new float[n * 3];
+        }
+        if (owing) {
+            // A tick that threw between an impact and the position integration.
+            java.util.Arrays.fill(owed, 0f);
+            owing = false;
         }
         float[] st = state;
         for (int k = 0; k < STRIDE; k++) {
@@ -154,14 +165,24 @@ final class SolverBodies {
      */
     void integratePositions(float h, int from, int to) {
         float[] st = state;
-        for (int o = from * STRIDE, end = to * STRIDE; o < end; o += STRIDE) {
+        float[] ow = owing ? owed : null;
+        for (int o = from * STRIDE, end = to * STRIDE, i = from; o < end; o += STRIDE, i++) {
             float dx = h * st[o + VX];
             float dy = h * st[o + VY];
+            float theta = h * st[o + W];
+            if (ow != null) {
+                int w = 3 * i;
+                dx += ow[w];
+                dy += ow[w + 1];
+                theta += ow[w + 2];
+                ow[w] = 0f;
+                ow[w + 1] = 0f;
+                ow[w + 2] = 0f;
+            }
             st[o + X] += dx;
             st[o + Y] += dy;
             st[o + DPX] += dx;
             st[o + DPY] += dy;
-            float theta = h * st[o + W];
             if (theta == 0f) {
                 continue;
             }
@@ -180,6 +201,15 @@ final class SolverBodies {
             rotate(st, o + C, rc, rs);
             rotate(st, o + DQC, rc, rs);
         }
+    }
+
+    /** Adds motion a moving body owes this substep (see {@link #owing}); integratePositions takes it. */
+    void owe(int slot, float dx, float dy, float dtheta) {
+        int w = 3 * slot;
+        owed[w] += dx;
+        owed[w + 1] += dy;
+        owed[w + 2] += dtheta;
+        owing = true;
     }
 
     /** Turns the (cos, sin) pair at st[i], st[i + 1] by (rc, rs) and renormalises it. */

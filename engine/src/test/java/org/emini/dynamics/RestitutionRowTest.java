@@ -90,11 +90,43 @@ class RestitutionRowTest {
                 }
                 assertTrue(energy <= SPEED * SPEED * 1.0001f, "e=" + e + " at " + rate + ": energy " + energy);
                 assertEquals(SPEED, momentum, 0.01f * SPEED, "e=" + e + " at " + rate + ": momentum kept");
-                // The far ball leaves first and fastest: no ball behind it overtakes it.
+                // The far ball leaves first and fastest: no ball behind it overtakes it. With e = 0.3 the
+                // row ends touching, and a pair may still close a speculative gap of a few thousandths of
+                // a pixel at a few thousandths of a px/s (0.003 at 60 ticks/s).
                 for (int i = 0; i < v.length - 1; i++) {
-                    assertTrue(v[i] <= v[v.length - 1] + 1e-3f, "e=" + e + " at " + rate + ": body " + i + " behind the far one");
+                    assertTrue(v[i] <= v[v.length - 1] + 1e-4f * SPEED, "e=" + e + " at " + rate + ": body " + i + " behind the far one");
                 }
             }
         }
+    }
+
+    @ParameterizedTest(name = "e = {0}, B''s mass {1}, gap {2} px at {3} ticks/s")
+    @CsvSource({"1, 1, 40, 20", "1, 1, 37, 20", "0.5, 100, 40, 20", "1, 10, 33.3, 60", "0.8, 3, 5.5, 240"})
+    void aHeadOnCollisionEndsWhereTheClosedFormPutsIt(float e, float massB, float gap, int rate) {
+        // A bounce is taken at the start of the substep in which the gap closes; the bodies keep their
+        // old velocities until it closes (one substep early, the positions were 1 px off at 20 ticks/s).
+        World world = new World();
+        world.setTicksPerSecond(rate);
+        world.setGravity(0f, 0f);
+        Shape a = Shape.createRectangle(20f, 20f);
+        a.setElasticity(e);
+        Shape b = Shape.createRectangle(20f, 20f);
+        b.setElasticity(1f);
+        b.setMass(massB);
+        Body bodyA = new Body(-20f - gap, 0f, a, true);
+        Body bodyB = new Body(0f, 0f, b, true);
+        bodyA.setVelocity(SPEED, 0f);
+        world.addBody(bodyA);
+        world.addBody(bodyB);
+        for (int t = 0; t < rate; t++) {
+            world.tick();
+        }
+        float impact = gap / SPEED;
+        float vA = (1f - e * massB) / (1f + massB) * SPEED;
+        float vB = (1f + e) / (1f + massB) * SPEED;
+        assertEquals(vA, bodyA.getVelocityX(), 0.01f * SPEED, "A's speed");
+        assertEquals(vB, bodyB.getVelocityX(), 0.01f * SPEED, "B's speed");
+        assertEquals(-20f + vA * (1f - impact), bodyA.getX(), 0.05f, "A's position");
+        assertEquals(vB * (1f - impact), bodyB.getX(), 0.05f, "B's position");
     }
 }
