@@ -270,7 +270,7 @@ final class ContactSolver {
             f[fo + CIRCLE_A] = kA;
             f[fo + CIRCLE_B] = kB;
             f[fo + SHIFT] = mA != 0f && mB != 0f && c.bodyB != null && level[ia] == 0 && level[ib] == 0
-                ? commonPointLimit(c.pointCount, ContactManager.part(a.getShape(), c.partA).getBoundingRadius(),
+                ? 0.2f * Math.min(ContactManager.part(a.getShape(), c.partA).getBoundingRadius(),
                     ContactManager.part(b.getShape(), c.partB).getBoundingRadius())
                 : 0f;
             for (int p = 0; p < c.pointCount; p++) {
@@ -314,25 +314,6 @@ final class ContactSolver {
                 prepareBlock(fo, mA, iA, mB, iB, nx, ny, maxCondition);
             }
         }
-    }
-
-    /**
-     * How far the common impulse point may move from the tick's contact point. A single point takes
-     * its effective masses anew from the moved arms, so it may follow the pair up to the larger part's
-     * bounding radius (a rod's tip striking a ball crosses several ball radii in a tick); the two
-     * points of a face are solved as a block whose matrix is the tick's, which holds for moves up to a
-     * fifth of the smaller part's radius (unbounded, the everything scene reached NaN in 11 ticks).
-     */
-    static float commonPointLimit(int pointCount, float radiusA, float radiusB) {
-        return pointCount == 1 ? Math.max(radiusA, radiusB) : 0.2f * Math.min(radiusA, radiusB);
-    }
-
-    /** 1 / (the effective mass of a point along direction (dx, dy)), from its arms; 0 if nothing moves. */
-    static float pointMass(float mA, float iA, float mB, float iB, float rax, float ray, float rbx, float rby, float dx, float dy) {
-        float ra = rax * dy - ray * dx;
-        float rb = rbx * dy - rby * dx;
-        float k = mA + mB + iA * ra * ra + iB * rb * rb;
-        return k > 0f ? 1f / k : 0f;
     }
 
     /**
@@ -876,7 +857,7 @@ final class ContactSolver {
                 float dvy = vby + wb * rbx - vay - wa * rax;
                 float vn = dvx * nx + dvy * ny;
                 float old = f[po + NIMP];
-                float nm = sx != 0f || sy != 0f ? pointMass(mA, iA, mB, iB, rax, ray, rbx, rby, nx, ny) : f[po + NMASS];
+                float nm = f[po + NMASS];
                 float acc = old - nm * massScale * (vn + bias) - impulseScale * old;
                 if (acc < 0f) {
                     acc = 0f;
@@ -911,8 +892,7 @@ final class ContactSolver {
                 float vt = -dvx * ny + dvy * nx;
                 float old = f[po + TIMP];
                 float maxF = friction * f[po + NIMP];
-                float tm = sx != 0f || sy != 0f ? pointMass(mA, iA, mB, iB, rax, ray, rbx, rby, -ny, nx) : f[po + TMASS];
-                float acc = old - tm * vt;
+                float acc = old - f[po + TMASS] * vt;
                 acc = acc < -maxF ? -maxF : (acc > maxF ? maxF : acc);
                 f[po + TIMP] = acc;
                 float d = acc - old;

@@ -30,7 +30,6 @@ import static org.emini.dynamics.ContactSolver.SHIFT;
 import static org.emini.dynamics.ContactSolver.TIMP;
 import static org.emini.dynamics.ContactSolver.TMASS;
 import static org.emini.dynamics.ContactSolver.commonPointShift;
-import static org.emini.dynamics.ContactSolver.pointMass;
 import static org.emini.dynamics.SolverBodies.DPX;
 import static org.emini.dynamics.SolverBodies.DPY;
 import static org.emini.dynamics.SolverBodies.DQC;
@@ -262,8 +261,7 @@ final class ElasticImpacts {
             // The first point's impulse may already have sent the second one apart.
             float vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny;
             float target = -e * (p == 0 ? approach1 : approach2);
-            float nm = sx != 0f || sy != 0f ? pointMass(mA, iA, mB, iB, rax, ray, rbx, rby, nx, ny) : f[po + NMASS];
-            float d = vn < target ? (target - vn) * nm : 0f;
+            float d = vn < target ? (target - vn) * f[po + NMASS] : 0f;
             if (p == 0) {
                 d1 = d;
             } else {
@@ -290,8 +288,7 @@ final class ElasticImpacts {
             float rby = f[po + RBY] - sy;
             float vt = -(vbx - wb * rby - vax + wa * ray) * ny + (vby + wb * rbx - vay - wa * rax) * nx;
             float maxF = friction * d;
-            float tm = sx != 0f || sy != 0f ? pointMass(mA, iA, mB, iB, rax, ray, rbx, rby, -ny, nx) : f[po + TMASS];
-            float t = -tm * vt;
+            float t = -f[po + TMASS] * vt;
             t = t < -maxF ? -maxF : (t > maxF ? maxF : t);
             float px = -t * ny;
             float py = t * nx;
