@@ -71,6 +71,32 @@ class ComparisonTest {
     }
 
     @Test
+    void aSceneWithAOneSidedSegmentHasNoLawForTunnelling() {
+        // elements/one-sided-floor: a ball rising through the open side is the scene's point; the
+        // oracle's segments are two-sided, so its count of 0 is not closer to any truth.
+        String wall = "      - tunnelling: {walls: [{from: [-200, 0], to: [200, 0]}]}";
+        String body = String.join("\n",
+                "bodies: [{name: ball, shape: {type: circle, radius: 5}, velocity: [10, 0]}]",
+                "landscape: {segments: [{from: [-200, 0], to: [200, 0]FACE}]}",
+                "run:",
+                "  duration: 1",
+                "  record:",
+                "    every: 0.1",
+                "    metrics:",
+                wall);
+        Trace engine = trace(t -> 10 * t, Map.of("tunnelling.count", t -> t > 0.5 ? 1 : 0));
+        Trace oracle = trace(t -> 10 * t, Map.of("tunnelling.count", t -> 0));
+        Comparison.Row oneSided = row(Comparison.compare(Scenes.valid("one.yaml", body.replace("FACE", ", face: left")),
+                "pass", engine, OK, oracle, null), "tunnelling.count");
+        assertEquals(null, oneSided.referenceSource());
+        assertEquals(Closer.NONE, oneSided.closer());
+        Comparison.Row twoSided = row(Comparison.compare(Scenes.valid("two.yaml", body.replace("FACE", "")),
+                "pass", engine, OK, oracle, null), "tunnelling.count");
+        assertEquals("law: no body passes through a wall", twoSided.referenceSource());
+        assertEquals(Closer.ORACLE, twoSided.closer());
+    }
+
+    @Test
     void reportsWriteTheVerdictsInTheWordsTheDashboardReads(@TempDir Path dir) throws Exception {
         Scenario s = Scenes.valid("iso.yaml", ISOLATED);
         Trace engine = trace(t -> 10 * t, Map.of("momentum.x", t -> 10 + 0.5 * t, "momentum.y", t -> 0));
