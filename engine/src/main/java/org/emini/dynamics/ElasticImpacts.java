@@ -118,12 +118,6 @@ final class ElasticImpacts {
         float vbx = st[ob + VX];
         float vby = st[ob + VY];
         float wb = st[ob + W];
-        float vax0 = vax;
-        float vay0 = vay;
-        float wa0 = wa;
-        float vbx0 = vbx;
-        float vby0 = vby;
-        float wb0 = wb;
         float dpx = st[ob + DPX] - st[oa + DPX];
         float dpy = st[ob + DPY] - st[oa + DPY];
         float qac = st[oa + DQC];
@@ -310,6 +304,17 @@ final class ElasticImpacts {
             f[po + NIMP] = 0f;
             f[po + TIMP] = 0f;
         }
+        // Until the gap closes the bodies keep their old velocities (still in st): the bounce is taken
+        // at the substep's start, so each owes the difference times that time (one substep early, a
+        // head-on collision closing on a tick boundary ended 1 px from its closed form).
+        if (contactTime > 0f) {
+            if (oa != 0 && mA != 0f) {
+                bodies.owe(oa / STRIDE, (st[oa + VX] - vax) * contactTime, (st[oa + VY] - vay) * contactTime, (st[oa + W] - wa) * contactTime);
+            }
+            if (ob != 0 && mB != 0f) {
+                bodies.owe(ob / STRIDE, (st[ob + VX] - vbx) * contactTime, (st[ob + VY] - vby) * contactTime, (st[ob + W] - wb) * contactTime);
+            }
+        }
         if (oa != 0) {
             st[oa + VX] = vax;
             st[oa + VY] = vay;
@@ -319,17 +324,6 @@ final class ElasticImpacts {
             st[ob + VX] = vbx;
             st[ob + VY] = vby;
             st[ob + W] = wb;
-        }
-        // Until the gap closes the bodies keep their old velocities: the bounce is taken at the
-        // substep's start, so each owes the difference times that time (one substep early, a head-on
-        // collision closing on a tick boundary ended 1 px from its closed form).
-        if (contactTime > 0f) {
-            if (oa != 0 && mA != 0f) {
-                bodies.owe(oa / STRIDE, (vax0 - vax) * contactTime, (vay0 - vay) * contactTime, (wa0 - wa) * contactTime);
-            }
-            if (ob != 0 && mB != 0f) {
-                bodies.owe(ob / STRIDE, (vbx0 - vbx) * contactTime, (vby0 - vby) * contactTime, (wb0 - wb) * contactTime);
-            }
         }
         // A bounce is a touch, although the points turn back just short of closing.
         Contact c = contacts[k];

@@ -72,12 +72,7 @@ class MomentumConservationTest {
         b.setAngularVelocity(-1f);
         world.addBody(a);
         world.addBody(b);
-        double before = momentum(world)[2];
-        double worst = 0;
-        for (int t = 0; t < 5 * rate; t++) {
-            world.tick();
-            worst = Math.max(worst, Math.abs(momentum(world)[2] - before));
-        }
+        double worst = worstAngularDrift(world, 5 * rate);
         assertTrue(b.getVelocityX() > 10f, "the boxes collided");
         // closed-form/angular-momentum-through-contact: 11.8 with the tick's arms, pymunk 2.18.
         assertEquals(0.0, worst, 0.05, "angular momentum about the origin");
@@ -99,15 +94,22 @@ class MomentumConservationTest {
         world.addBody(rod);
         world.addBody(ball);
         double before = momentum(world)[2];
-        double worst = 0;
-        for (int t = 0; t < 2 * rate; t++) {
-            world.tick();
-            worst = Math.max(worst, Math.abs(momentum(world)[2] - before));
-        }
+        double worst = worstAngularDrift(world, 2 * rate);
         assertTrue(Math.hypot(ball.getVelocityX(), ball.getVelocityY()) > 100f, "the ball was struck");
         // 29 of 480,000 (the common point follows the ball at most 0.8 px); 332 when only the ball's
         // arm ended on its surface; pymunk 13. At 60 ticks/s 520 (fast-bodies/spinning-rod-hits-ball-60hz).
         assertEquals(0.0, worst / Math.abs(before), 1e-4, "angular momentum about the origin, relative");
+    }
+
+    /** The largest change of the angular momentum about the origin over the next ticks. */
+    private static double worstAngularDrift(World world, int ticks) {
+        double before = momentum(world)[2];
+        double worst = 0;
+        for (int t = 0; t < ticks; t++) {
+            world.tick();
+            worst = Math.max(worst, Math.abs(momentum(world)[2] - before));
+        }
+        return worst;
     }
 
     /** px, py, angular momentum about the origin, Σ m|v|, Σ |I ω| + m |r × v|. */
