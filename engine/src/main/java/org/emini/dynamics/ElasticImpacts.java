@@ -154,9 +154,9 @@ final class ElasticImpacts {
         boolean hit1 = false;
         boolean hit2 = false;
         float approach1 = 0f;
+        float approach2 = 0f;
         // When within the substep the first bouncing point closes its gap.
         float contactTime = h;
-        float approach2 = 0f;
         float e = f[fo + RESTITUTION];
         for (int p = 0; p < pc; p++) {
             int po = fo + P0 + p * PS;

@@ -1,5 +1,6 @@
 package org.emini.dynamics;
 
+import java.util.Arrays;
 import org.emini.math.EMath;
 
 /**
@@ -60,7 +61,7 @@ final class SolverBodies {
         }
         if (owing) {
             // A tick that threw between an impact and the position integration.
-            java.util.Arrays.fill(owed, 0f);
+            Arrays.fill(owed, 0f);
             owing = false;
         }
         float[] st = state;
