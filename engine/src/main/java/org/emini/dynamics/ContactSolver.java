@@ -3,6 +3,8 @@ package org.emini.dynamics;
 import org.emini.shape.Circle;
 import org.emini.shape.Shape;
 
+import static org.emini.dynamics.SolverBodies.AX;
+import static org.emini.dynamics.SolverBodies.AY;
 import static org.emini.dynamics.SolverBodies.DPX;
 import static org.emini.dynamics.SolverBodies.DPY;
 import static org.emini.dynamics.SolverBodies.DQC;
@@ -134,6 +136,7 @@ final class ContactSolver {
     int minPart = MIN_PART;
     private float[] workerChange = new float[PAD];
     private int[] workerHot = new int[PAD];
+    private float[] workerLoad = new float[PAD];
     // The pass that forColours runs, as the range tasks read it.
     private SubstepContext passContext;
     private SolverBodies passBodies;
@@ -152,10 +155,11 @@ final class ContactSolver {
     private Softness prepareSoft;
     private Softness prepareStaticSoft;
     private float prepareCondition;
+    private float prepareImpulseStep;
     private final WorkerPool.RangeTask prepareTask = new WorkerPool.RangeTask() {
         @Override
         public void run(int worker, int from, int to) {
-            prepareRange(from, to);
+            prepareRange(worker, from, to);
         }
     };
     private final WorkerPool.RangeTask warmTask = new WorkerPool.RangeTask() {
@@ -175,6 +179,7 @@ final class ContactSolver {
         if (workerChange.length < size) {
             workerChange = new float[size];
             workerHot = new int[size];
+            workerLoad = new float[size];
         }
     }
 
@@ -182,7 +187,8 @@ final class ContactSolver {
      * Builds the constraints of all touching contacts from the poses at the start of the tick.
      * Softness is set per constraint: contacts with a static body use the stiffer setting.
      */
-    void prepare(Contact[] all, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft, float maxCondition) {
+    void prepare(Contact[] all, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft, float maxCondition,
+            float impulseStep) {
         ensure(contactCount);
         colour(all, contactCount, bodies);
         prepareContacts = all;
@@ -190,22 +196,28 @@ final class ContactSolver {
         prepareSoft = soft;
         prepareStaticSoft = staticSoft;
         prepareCondition = maxCondition;
+        prepareImpulseStep = impulseStep;
+        for (int w = 0; w < workerLoad.length; w += PAD) {
+            workerLoad[w] = 0f;
+        }
         if (pool != null) {
             pool.run(prepareTask, 0, contactCount, minPart);
         } else {
-            prepareRange(0, contactCount);
+            prepareRange(0, 0, contactCount);
         }
         prepareContacts = null;
         impacts.collect(f, count);
     }
 
     /** Builds the constraints of contacts [from, to) of the narrowphase's list (each writes only its slot). */
-    private void prepareRange(int from, int to) {
+    private void prepareRange(int worker, int from, int to) {
         Contact[] all = prepareContacts;
         float[] st = passBodies.state;
         Softness soft = prepareSoft;
         Softness staticSoft = prepareStaticSoft;
         float maxCondition = prepareCondition;
+        float impulseStep = prepareImpulseStep;
+        float load = 0f;
         for (int ci = from; ci < to; ci++) {
             int k = slotOf[ci];
             if (k < 0) {
@@ -241,6 +253,27 @@ final class ContactSolver {
             f[fo + BIAS_RATE] = sf.biasRate;
             f[fo + MASS_SCALE] = sf.massScale;
             f[fo + IMPULSE_SCALE] = sf.impulseScale;
+            // A dynamic body pressed onto another by gravity and forces loads their contact with its
+            // weight: the acceleration that weight gives the pair along the normal. Only when the
+            // contact carried at least a quarter of it in the last substep: a pinned or hanging body
+            // puts its weight on its joints, not on what it touches.
+            if (mA != 0f && mB != 0f && c.pointCount > 0) {
+                float pushA = st[oa + AX] * nx + st[oa + AY] * ny;
+                float pushB = -(st[ob + AX] * nx + st[ob + AY] * ny);
+                float sum = mA + mB;
+                // Compared as products first: most pairs cannot raise the load, and pay no division.
+                boolean raisesA = pushA * sum > load * mA;
+                boolean raisesB = pushB * sum > load * mB;
+                if (raisesA || raisesB) {
+                    float impulse = c.pointCount == 2 ? c.normalImpulse0 + c.normalImpulse1 : c.normalImpulse0;
+                    if (raisesA && 4f * impulse * mA >= pushA * impulseStep) {
+                        load = pushA * sum / mA;
+                    }
+                    if (raisesB && 4f * impulse * mB >= pushB * impulseStep) {
+                        load = Math.max(load, pushB * sum / mB);
+                    }
+                }
+            }
             float vax = st[oa + VX];
             float vay = st[oa + VY];
             float wa = st[oa + W];
@@ -313,6 +346,36 @@ final class ContactSolver {
             if (c.pointCount == 2) {
                 prepareBlock(fo, mA, iA, mB, iB, nx, ny, maxCondition);
             }
+        }
+        int o = worker * PAD;
+        workerLoad[o] = Math.max(workerLoad[o], load);
+    }
+
+    /**
+     * The heaviest load among the prepared contacts between dynamic bodies: the largest acceleration
+     * along its normal that the weight of one body (gravity and applied forces) pressing on the other
+     * gives the pair. Over the contact frequency squared, it is how deep the contact sinks under that
+     * weight.
+     */
+    float heaviestLoad() {
+        float load = 0f;
+        for (int w = 0; w < workerLoad.length; w += PAD) {
+            load = Math.max(load, workerLoad[w]);
+        }
+        return load;
+    }
+
+    /** Sets the prepared contacts' softness again, when the solver changed the substep after the prepare. */
+    void soften(SolverBodies bodies, Softness soft, Softness staticSoft) {
+        float[] st = bodies.state;
+        for (int k = 0; k < count; k++) {
+            int io = k * CI;
+            boolean rigidSide = st[n[io + BODY_A] * STRIDE + IM] == 0f || st[n[io + BODY_B] * STRIDE + IM] == 0f;
+            Softness sf = rigidSide ? staticSoft : soft;
+            int fo = k * CS;
+            f[fo + BIAS_RATE] = sf.biasRate;
+            f[fo + MASS_SCALE] = sf.massScale;
+            f[fo + IMPULSE_SCALE] = sf.impulseScale;
         }
     }
 

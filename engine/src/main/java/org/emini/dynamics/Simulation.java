@@ -23,7 +23,8 @@ import org.emini.shape.Shape;
  * {@linkplain #setSimulationArea(float, float, float, float) simulation area}); update the
  * broadphase and create contacts for pairs that came close and for bodies near segments of the
  * {@link Landscape}; run the narrowphase on the simulated bodies' contacts; then solve. The solver
- * splits the tick into substeps, one per iteration: each substep integrates velocities, bounces the
+ * splits the tick into substeps, one per iteration (more in a tick where a heavy body would sink
+ * into a light one deeper than {@link SolverSettings#getSinkLimit()}): each substep integrates velocities, bounces the
  * elastic impacts that close within it (pairwise collisions), warm-starts, makes one soft
  * (position-correcting) pass over the contacts, integrates positions and makes one rigid relax pass.
  * In dynamic-iteration mode the solver stops solving once a substep's impulses differ from those it
@@ -151,7 +152,8 @@ public abstract class Simulation {
     }
 
     /**
-     * The solver's effort per tick: the number of substeps (each a soft solve and a relax pass).
+     * The solver's effort per tick: the number of substeps (each a soft solve and a relax pass), the
+     * fewest the solver takes (see {@link SolverSettings#getSinkLimit()}).
      *
      * @return the iteration count
      */
@@ -190,7 +192,8 @@ public abstract class Simulation {
     }
 
     /**
-     * The number of iterations (substeps) the last tick used.
+     * The number of iterations (substeps) the last tick solved: in dynamic mode those before it
+     * converged, and more than the iteration count where the sink limit asked for them.
      *
      * @return the count
      */

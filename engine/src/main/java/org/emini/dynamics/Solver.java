@@ -2,10 +2,12 @@ package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
 import org.emini.internal.WorkerPool;
+import org.emini.math.EMath;
 
 /**
  * The solve of one tick: the soft step of Box2D v3 (Catto's "solver2d" study) on flat copies of the
- * simulated bodies. The tick is split into substeps, one per iteration; each integrates velocities,
+ * simulated bodies. The tick is split into substeps, one per iteration (more where the sink limit
+ * asks: {@link SolverSettings#getSinkLimit()}); each integrates velocities,
  * bounces the elastic impacts that close within it, warm-starts the constraints and contacts, makes
  * one soft (position-correcting) pass, integrates positions and makes rigid relax passes. Then the
  * constraints' finish, the continuous pass that keeps fast bodies from passing through static ones,
@@ -142,8 +144,16 @@ final class Solver {
         }
         solving = true;
         setSoftness(settings, h);
+        contacts.prepare(active, activeCount, sb, soft, staticSoft, settings.getBlockConditionLimit(),
+            lastSubstep != 0f ? lastSubstep : h);
+        int sinkSubsteps = sinkSubsteps(settings, dt, n, contacts.heaviestLoad());
+        if (sinkSubsteps > n) {
+            n = sinkSubsteps;
+            h = dt / n;
+            setSoftness(settings, h);
+            contacts.soften(sb, soft, staticSoft);
+        }
         step.begin(dt, h, settings);
-        contacts.prepare(active, activeCount, sb, soft, staticSoft, settings.getBlockConditionLimit());
         // Stored impulses belong to the substep they were computed for.
         if (lastSubstep != 0f && lastSubstep != h) {
             contacts.scaleImpulses(h / lastSubstep);
@@ -219,6 +229,29 @@ final class Solver {
     /** Resets the solve phase after a failure inside it (a constraint threw). */
     void abort() {
         solving = false;
+    }
+
+    /**
+     * The fewest substeps, from n up to the sink limit's factor times n, at which the heaviest load
+     * sinks its contact no deeper than the limit (see {@link SolverSettings#getSinkLimit()}). A
+     * contact of frequency ω sinks by its load's acceleration over ω²; substeps raise ω until the
+     * contact frequency setting caps it.
+     */
+    private int sinkSubsteps(SolverSettings settings, float dt, int n, float load) {
+        float limit = settings.getSinkLimit();
+        if (!(load > 0f) || limit == Float.POSITIVE_INFINITY) {
+            return n;
+        }
+        // Never beyond the iteration count's own range.
+        int most = Math.max(n, Math.min((int) (n * settings.getSinkSubstepFactor()), 1000));
+        for (int m = n; m < most; m++) {
+            float hertz = Math.min(settings.getContactHertz(), settings.getSubstepHertzRatio() * m / dt);
+            float omega = EMath.TWO_PI * hertz;
+            if (load <= limit * omega * omega || hertz == settings.getContactHertz()) {
+                return m;
+            }
+        }
+        return most;
     }
 
     private void setSoftness(SolverSettings settings, float h) {

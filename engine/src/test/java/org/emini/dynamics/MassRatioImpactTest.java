@@ -3,8 +3,6 @@ package org.emini.dynamics;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import org.emini.shape.Polygon;
-import org.emini.shape.Shape;
 import org.emini.world.World;
 import org.junit.jupiter.api.Test;
 
@@ -19,13 +17,9 @@ class MassRatioImpactTest {
     private static float fastestRise(float heavyMass, int impactPasses, Body[] out) {
         World world = new World();
         world.getSolverSettings().setImpactRelaxPasses(impactPasses);
-        Scenes.ground(world, 0f, 400f);
-        Body light = new Body(0f, -10f, Shape.createRectangle(20f, 20f), true);
-        world.addBody(light);
-        Polygon heavyShape = Shape.createRectangle(40f, 40f);
-        heavyShape.setMass(heavyMass);
-        Body heavy = new Body(0f, -300f, heavyShape, true);
-        world.addBody(heavy);
+        Body[] pair = Scenes.heavyOnLight(world, heavyMass, -300f);
+        Body light = pair[0];
+        Body heavy = pair[1];
         float rise = 0f;
         for (int tick = 0; tick < 200; tick++) {
             world.tick();

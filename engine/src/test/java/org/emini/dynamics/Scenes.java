@@ -1,5 +1,6 @@
 package org.emini.dynamics;
 
+import org.emini.shape.Polygon;
 import org.emini.shape.Shape;
 import org.emini.world.World;
 
@@ -42,6 +43,21 @@ final class Scenes {
             }
         }
         return boxes;
+    }
+
+    /**
+     * A light 20 px box (mass 1) on a ground whose top is y = 0 and a 40 px box of the given mass
+     * above it, its centre at heavyY (-40: resting on the light one); returns the light and the heavy.
+     */
+    static Body[] heavyOnLight(World world, float heavyMass, float heavyY) {
+        ground(world, 0f, 400f);
+        Body light = new Body(0f, -10f, Shape.createRectangle(20f, 20f), true);
+        world.addBody(light);
+        Polygon heavyShape = Shape.createRectangle(40f, 40f);
+        heavyShape.setMass(heavyMass);
+        Body heavy = new Body(0f, heavyY, heavyShape, true);
+        world.addBody(heavy);
+        return new Body[] {light, heavy};
     }
 
     static void run(World world, float seconds) {

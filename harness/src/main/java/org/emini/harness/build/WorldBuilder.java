@@ -103,6 +103,8 @@ public final class WorldBuilder {
             case "convergenceTolerance" -> s.setConvergenceTolerance(v);
             case "impactTolerance" -> s.setImpactTolerance(v);
             case "impactRelaxPasses" -> s.setImpactRelaxPasses((int) Math.round(v));
+            case "sinkLimit" -> s.setSinkLimit(v);
+            case "sinkSubstepFactor" -> s.setSinkSubstepFactor(v);
             default -> throw new IllegalArgumentException("unknown solver setting " + key);
         }
     }
