@@ -126,6 +126,7 @@ final class ContactSolver {
     // Relax passes so far; passes are told apart by this number, so stamps never need clearing.
     private int pass;
     private boolean anyHot;
+    private final HotContacts hotContacts = new HotContacts();
 
     /** The fewest contacts of a colour worth a thread of their own: a split costs about a microsecond. */
     static final int MIN_PART = 128;
@@ -191,6 +192,7 @@ final class ContactSolver {
             float impulseStep) {
         ensure(contactCount);
         colour(all, contactCount, bodies);
+        hotContacts.slotsChanged();
         prepareContacts = all;
         passBodies = bodies;
         prepareSoft = soft;
@@ -740,9 +742,17 @@ final class ContactSolver {
             if (hot.length < bodies.count) {
                 hot = new int[Math.max(bodies.count, 2 * hot.length)];
             }
+            if (hotOnly) {
+                hotContacts.select(n, count, bodies.count);
+            }
+            hotContacts.clearLists(workerCount(), bodies.count);
             passCurrent = ++pass;
         }
-        forColours(passTask);
+        if (hotOnly) {
+            hotPass();
+        } else {
+            forColours(passTask);
+        }
         boolean marked = false;
         float maxChange = 0f;
         for (int w = 0; w < workerCount(); w++) {
@@ -876,7 +886,7 @@ final class ContactSolver {
                         float px = (d1 + d2) * nx;
                         float py = (d1 + d2) * ny;
                         if (!useBias) {
-                            marked |= markHot(mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, Math.max((d1 < 0f ? -d1 : d1) * f[p1 + KN], (d2 < 0f ? -d2 : d2) * f[p2 + KN]),
+                            marked |= markHot(worker, mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, Math.max((d1 < 0f ? -d1 : d1) * f[p1 + KN], (d2 < 0f ? -d2 : d2) * f[p2 + KN]),
                                 hotTolerance, current);
                         }
                         vax -= mA * px;
@@ -931,7 +941,7 @@ final class ContactSolver {
                     f[po + MAXIMP] = d;
                 }
                 if (!useBias) {
-                    marked |= markHot(mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, (d < 0f ? -d : d) * f[po + KN], hotTolerance, current);
+                    marked |= markHot(worker, mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, (d < 0f ? -d : d) * f[po + KN], hotTolerance, current);
                 }
                 float px = d * nx;
                 float py = d * ny;
@@ -1043,6 +1053,20 @@ final class ContactSolver {
         task.run(0, colourStart[COLOURS], count);
     }
 
+    /** A hot pass over the selected slots in slot order, by the calling thread (a few contacts each). */
+    private void hotPass() {
+        for (int w = 0; w < workerCount(); w++) {
+            workerChange[w * PAD] = 0f;
+            workerHot[w * PAD] = 0;
+        }
+        int k = hotContacts.next(0, count);
+        while (k < count) {
+            int end = hotContacts.runEnd(k, count);
+            passRange(0, k, end);
+            k = hotContacts.next(end, count);
+        }
+    }
+
     private int workerCount() {
         return pool == null ? 1 : pool.getThreadCount();
     }
@@ -1067,15 +1091,17 @@ final class ContactSolver {
      * Marks both bodies for the next hot pass when an impulse changed their relative speed by more
      * than tolerance; true when it did.
      */
-    private boolean markHot(int ia, int ib, float change, float tolerance, int current) {
+    private boolean markHot(int worker, int ia, int ib, float change, float tolerance, int current) {
         if (change > tolerance) {
             // Slot 0 is every static body: marking it would make all static contacts hot. Callers pass 0
             // for a kinematic body too, whose velocity no impulse changes.
-            if (ia != 0) {
+            if (ia != 0 && hot[ia] != current) {
                 hot[ia] = current;
+                hotContacts.list(worker, ia);
             }
-            if (ib != 0) {
+            if (ib != 0 && hot[ib] != current) {
                 hot[ib] = current;
+                hotContacts.list(worker, ib);
             }
             return true;
         }
