@@ -397,7 +397,8 @@ public final class SolverSettings {
     /**
      * Most substeps the {@linkplain #getSinkLimit() sink limit} may take, as a multiple of the
      * iteration count, and never more than 1000 a tick. Default 2: a 1:1000 box then sinks 0.6 px at
-     * the defaults; a 1:10,000 one would need 4.5 times the substeps and stops at twice.
+     * the defaults; a 1:10,000 one would need 4.5 times the substeps (at twice it is still squeezed
+     * out, as at 10).
      *
      * @return the factor, ≥ 1
      */
