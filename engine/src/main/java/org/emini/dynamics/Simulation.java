@@ -1123,10 +1123,11 @@ public abstract class Simulation {
      * count. The narrowphase, the contacts' preparation and the position integration are shared too
      * (contacts are then destroyed and touches reported by the calling thread, in order); the joints,
      * the broadphase and the velocity integration are not. Parts are at least 64 contacts in the
-     * narrowphase, 128 in a colour and 256 bodies; the threads spin between the passes and park between
-     * ticks. Measured on a 2-core virtual machine the gain is not reliable yet (ten 20-row pyramids
-     * 0.5 to 1.25 times the one-thread speed, rain of 10,000 bodies 0.7 to 1.05, across paired runs): try it on the
-     * target device. Call with 1 to stop the threads when the world is no longer used.
+     * narrowphase, 48 in a colour and 256 bodies; the threads spin between the passes and park between
+     * ticks. Measured with two threads on a 2-core virtual machine whose speed varies from run to run
+     * (`./emini bench`, 2026-11-28): ten 20-row pyramids 1.3 to 1.4 times the one-thread speed, rain
+     * of 10,000 bodies 1.1 to 1.5, the tumbler 1.0 to 1.2: try it on the target device. Call with 1
+     * to stop the threads when the world is no longer used.
      *
      * @param workers the threads that share the solve, counting the one that calls {@link #tick()}:
      *     1 to 64
