@@ -245,7 +245,7 @@ final class Solver {
         // Never beyond the iteration count's own range.
         int most = Math.max(n, Math.min((int) (n * settings.getSinkSubstepFactor()), 1000));
         for (int m = n; m < most; m++) {
-            float hertz = Math.min(settings.getContactHertz(), settings.getSubstepHertzRatio() * m / dt);
+            float hertz = contactHertz(settings, dt / m);
             float omega = EMath.TWO_PI * hertz;
             if (load <= limit * omega * omega || hertz == settings.getContactHertz()) {
                 return m;
@@ -254,8 +254,13 @@ final class Solver {
         return most;
     }
 
+    /** The contact frequency over substeps of h: the setting, capped at a fraction of the substep rate. */
+    private static float contactHertz(SolverSettings settings, float h) {
+        return Math.min(settings.getContactHertz(), settings.getSubstepHertzRatio() / h);
+    }
+
     private void setSoftness(SolverSettings settings, float h) {
-        float hertz = Math.min(settings.getContactHertz(), settings.getSubstepHertzRatio() / h);
+        float hertz = contactHertz(settings, h);
         soft.set(hertz, settings.getContactDampingRatio(), h);
         staticSoft.set(2f * hertz, settings.getContactDampingRatio(), h);
     }
