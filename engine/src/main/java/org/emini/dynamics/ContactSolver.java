@@ -129,7 +129,7 @@ final class ContactSolver {
     private final HotContacts hotContacts = new HotContacts();
 
     /**
-     * The fewest contacts of a colour worth a thread of their own. A contact costs about 45 ns a pass
+     * The fewest contacts of a colour worth a thread of their own. A contact costs about 40 ns a pass
      * and a split about a microsecond or two, so 48 contacts (about 2 µs) pay for it. The level
      * colouring makes many colours of 100 to 250 contacts (ten 20-row pyramids): at 128 most ran on
      * one thread, and two threads gave 1.13 times the speed of one; at 48, 1.3 to 1.4.
