@@ -452,6 +452,9 @@ final class ContactManager implements PairCallback, QueryCallback {
         } else {
             collideRange(0, from, activeCount);
         }
+        // In the list's order, for the events; a contact that neither died, nor began or ended
+        // touching, nor waits for the filter is not read here (the loop over a large pile stayed on
+        // one thread and missed the cache on every contact).
         NarrowPhase own = narrow[0];
         int kept = from;
         for (int i = from; i < activeCount; i++) {
@@ -462,19 +465,29 @@ final class ContactManager implements PairCallback, QueryCallback {
                 c.filterDirty = false;
                 o = shouldCollide(c.bodyA, c.bodyB) && filterAccepts(c.bodyA, c.bodyB)
                     ? own.collideParts(c, parts, broadPhase, dt, speculative, reuseTolerance) : NarrowPhase.DEAD;
+                if (o != NarrowPhase.DEAD) {
+                    o = touch(c, speculative);
+                }
             }
             if (o == NarrowPhase.DEAD) {
                 destroy(c);
-            } else {
-                touch(c, speculative);
-                active[kept++] = c;
+                continue;
             }
+            if (o == BEGAN) {
+                world.stepData.contactBegan(c);
+            } else if (o == ENDED) {
+                world.stepData.contactEnded(c);
+            }
+            active[kept++] = c;
         }
         activeCount = kept;
         phaseBroadPhase = null;
     }
 
-    /** The narrowphase of active contacts [from, to) by one thread: outcomes only, no shared state. */
+    /**
+     * The narrowphase of active contacts [from, to) by one thread: each contact's manifold, touching
+     * flag and outcome, no shared state.
+     */
     private void collideRange(int worker, int from, int to) {
         NarrowPhase np = narrow[worker];
         BroadPhase broadPhase = phaseBroadPhase;
@@ -485,8 +498,9 @@ final class ContactManager implements PairCallback, QueryCallback {
         byte[] out = outcome;
         for (int i = from; i < to; i++) {
             Contact c = list[i];
-            out[i] = c.segmentSlot >= 0 ? np.collideLandscape(c, parts, broadPhase, dt, speculative, tolerance)
+            byte o = c.segmentSlot >= 0 ? np.collideLandscape(c, parts, broadPhase, dt, speculative, tolerance)
                 : np.collideBodies(c, parts, broadPhase, dt, speculative, tolerance);
+            out[i] = o == NarrowPhase.ALIVE ? touch(c, speculative) : o;
         }
     }
 
@@ -522,17 +536,25 @@ final class ContactManager implements PairCallback, QueryCallback {
         activeCount = kept;
     }
 
-    /** Starts touching at zero separation, stops beyond the speculative distance; reports both. */
-    private void touch(Contact c, float speculative) {
+    // Outcomes of a contact that lives on, beside NarrowPhase's: it began or ended touching.
+    private static final byte BEGAN = 3;
+    private static final byte ENDED = 4;
+
+    /**
+     * Starts touching at zero separation, stops beyond the speculative distance: ALIVE, BEGAN or
+     * ENDED, for the events, which the caller reports in the list's order.
+     */
+    private static byte touch(Contact c, float speculative) {
         int n = c.pointCount;
         float gap = n == 0 ? Float.MAX_VALUE : n == 1 ? c.separation0 : Math.min(c.separation0, c.separation1);
         if (!c.touching && gap <= 0f) {
             c.touching = true;
-            world.stepData.contactBegan(c);
+            return BEGAN;
         } else if (c.touching && !(gap <= speculative)) {
             c.touching = false;
-            world.stepData.contactEnded(c);
+            return ENDED;
         }
+        return NarrowPhase.ALIVE;
     }
 
 }
