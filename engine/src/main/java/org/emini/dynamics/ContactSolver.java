@@ -270,7 +270,7 @@ final class ContactSolver {
                 if (raisesA || raisesB) {
                     float impulse = c.pointCount == 2 ? c.normalImpulse0 + c.normalImpulse1 : c.normalImpulse0;
                     if (raisesA && 4f * impulse * mA >= pushA * impulseStep) {
-                        load = pushA * sum / mA;
+                        load = Math.max(load, pushA * sum / mA);
                     }
                     if (raisesB && 4f * impulse * mB >= pushB * impulseStep) {
                         load = Math.max(load, pushB * sum / mB);
