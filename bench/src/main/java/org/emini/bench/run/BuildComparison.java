@@ -29,7 +29,10 @@ import java.util.List;
  * </pre>
  *
  * Arguments: the folder of third-party jars, the scene id, untimed ticks first, ticks per window,
- * windows, the two build folders.
+ * windows, the two build folders, and optionally a thread count: above 1, both worlds solve with
+ * that many threads ({@code World.setWorkerCount}) and each tick is timed by the wall clock, since
+ * the thread's CPU clock misses the workers. Each world's idle workers spin a while after its tick,
+ * during the other's: compare builds that park their workers alike.
  */
 public final class BuildComparison {
     private BuildComparison() {
@@ -42,32 +45,34 @@ public final class BuildComparison {
      * @throws Exception when a build cannot be loaded or the scene built
      */
     public static void main(String[] args) throws Exception {
-        if (args.length != 7) {
-            throw new IllegalArgumentException("arguments: libDir scene preroll windowTicks windows buildA buildB");
+        if (args.length != 7 && args.length != 8) {
+            throw new IllegalArgumentException("arguments: libDir scene preroll windowTicks windows buildA buildB [threads]");
         }
+        int workers = args.length == 8 ? Integer.parseInt(args[7]) : 1;
         String scene = args[1];
         int preroll = Integer.parseInt(args[2]);
         int window = Integer.parseInt(args[3]);
         int windows = Integer.parseInt(args[4]);
         ClassLoader shared = new URLClassLoader(thirdPartyJars(new File(args[0])), ClassLoader.getPlatformClassLoader());
-        Build a = new Build(new File(args[5]), shared, scene);
-        Build b = new Build(new File(args[6]), shared, scene);
+        Build a = new Build(new File(args[5]), shared, scene, workers);
+        Build b = new Build(new File(args[6]), shared, scene, workers);
         // The preroll, then one window untimed, so that both builds are compiled.
         for (int i = 0; i < preroll + window; i++) {
             a.tick();
             b.tick();
         }
         ThreadMXBean threads = (ThreadMXBean) ManagementFactory.getThreadMXBean();
+        boolean wall = workers > 1;
         double[] ratios = new double[windows];
         for (int w = 0; w < windows; w++) {
             long[] cpu = new long[2];
             for (int i = 0; i < window; i++) {
                 boolean aFirst = (i & 1) == 0;
-                long t0 = threads.getCurrentThreadCpuTime();
+                long t0 = wall ? System.nanoTime() : threads.getCurrentThreadCpuTime();
                 (aFirst ? a : b).tick();
-                long t1 = threads.getCurrentThreadCpuTime();
+                long t1 = wall ? System.nanoTime() : threads.getCurrentThreadCpuTime();
                 (aFirst ? b : a).tick();
-                long t2 = threads.getCurrentThreadCpuTime();
+                long t2 = wall ? System.nanoTime() : threads.getCurrentThreadCpuTime();
                 cpu[aFirst ? 0 : 1] += t1 - t0;
                 cpu[aFirst ? 1 : 0] += t2 - t1;
             }
@@ -77,8 +82,11 @@ public final class BuildComparison {
             System.out.printf("window %d: A %.4f ms/tick, B %.4f ms/tick, B/A %.3f (contacts A %s, B %s)%n", w, ma, mb,
                 ratios[w], a.contacts(), b.contacts());
         }
+        a.close();
+        b.close();
         Arrays.sort(ratios);
-        System.out.printf("%s: median B/A %.3f over %d windows of %d ticks%n", scene, ratios[windows / 2], windows, window);
+        System.out.printf("%s: median B/A %.3f over %d windows of %d ticks%s%n", scene, ratios[windows / 2], windows, window,
+            wall ? ", " + workers + " threads, wall clock" : "");
     }
 
     private static URL[] thirdPartyJars(File lib) throws MalformedURLException {
@@ -102,8 +110,9 @@ public final class BuildComparison {
         private final Object world;
         private final Method tick;
         private final Method contactCount;
+        private final Method setWorkers;
 
-        Build(File dir, ClassLoader shared, String scene) throws Exception {
+        Build(File dir, ClassLoader shared, String scene, int workers) throws Exception {
             URL[] urls = {new File(dir, "engine/").toURI().toURL(), new File(dir, "harness/").toURI().toURL(),
                 new File(dir, "bench/").toURI().toURL()};
             ClassLoader loader = new URLClassLoader(urls, shared);
@@ -115,6 +124,15 @@ public final class BuildComparison {
             world = built.getClass().getMethod("world").invoke(built);
             tick = world.getClass().getMethod("tick");
             contactCount = world.getClass().getMethod("getContactCount");
+            setWorkers = world.getClass().getMethod("setWorkerCount", int.class);
+            if (workers > 1) {
+                setWorkers.invoke(world, workers);
+            }
+        }
+
+        /** Stops the world's workers, if it has any. */
+        void close() throws Exception {
+            setWorkers.invoke(world, 1);
         }
 
         void tick() throws Exception {
