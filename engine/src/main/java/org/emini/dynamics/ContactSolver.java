@@ -418,7 +418,8 @@ final class ContactSolver {
      * ({@link ContactGraphKey}).
      */
     private void colour(Contact[] all, int contactCount, SolverBodies bodies) {
-        if (keepColouring && graph.matches(all, contactCount, bodies)) {
+        graph.read(all, contactCount);
+        if (keepColouring && graph.matches(contactCount, bodies)) {
             return;
         }
         colourings++;
@@ -436,22 +437,22 @@ final class ContactSolver {
         for (int i = 0; i < bodyCount * WORDS; i++) {
             used[i] = 0L;
         }
-        levels(all, contactCount, bodies);
+        levels(contactCount, bodies);
         int[] depth = level;
         int[] sizes = colourStart;
         for (int c = 0; c <= COLOURS + 1; c++) {
             sizes[c] = 0;
         }
         int[] colourOf = slotOf;
+        ContactGraphKey pairs = graph;
         for (int ci = 0; ci < contactCount; ci++) {
-            Contact c = all[ci];
             colourOf[ci] = -1;
-            graph.pair(ci, ContactGraphKey.first(c), ContactGraphKey.second(c));
-            if (c.pointCount == 0) {
+            int ia = pairs.first(ci);
+            if (ia < 0) {
                 continue;
             }
-            int ia = c.bodyA.solverIndex;
-            int ib = c.bodyB != null ? c.bodyB.solverIndex : 0;
+            int second = pairs.second(ci);
+            int ib = second >= 0 ? second : 0;
             // Zero inverse mass on both sides (static, frozen or kinematic bodies): nothing to solve.
             if (st[ia * STRIDE + IM] == 0f && st[ib * STRIDE + IM] == 0f) {
                 continue;
@@ -520,7 +521,7 @@ final class ContactSolver {
      * it and one that does not (a breadth-first search over the contact graph); bodies that touch
      * nothing still get 0, so that floating clusters start at colour 0.
      */
-    private void levels(Contact[] all, int contactCount, SolverBodies bodies) {
+    private void levels(int contactCount, SolverBodies bodies) {
         float[] st = bodies.state;
         int bodyCount = bodies.count;
         int[] depth = level;
@@ -529,13 +530,15 @@ final class ContactSolver {
             startOf[i] = 0;
         }
         int edges = 0;
+        ContactGraphKey pairs = graph;
         for (int ci = 0; ci < contactCount; ci++) {
-            Contact c = all[ci];
-            if (c.pointCount == 0 || c.bodyB == null) {
+            int ia = pairs.first(ci);
+            int ib = pairs.second(ci);
+            if (ia < 0 || ib < 0) {
                 continue;
             }
-            startOf[c.bodyA.solverIndex + 1]++;
-            startOf[c.bodyB.solverIndex + 1]++;
+            startOf[ia + 1]++;
+            startOf[ib + 1]++;
             edges += 2;
         }
         for (int i = 1; i <= bodyCount; i++) {
@@ -547,12 +550,11 @@ final class ContactSolver {
         int[] fill = queue;
         System.arraycopy(startOf, 0, fill, 0, bodyCount);
         for (int ci = 0; ci < contactCount; ci++) {
-            Contact c = all[ci];
-            if (c.pointCount == 0 || c.bodyB == null) {
+            int ia = pairs.first(ci);
+            int ib = pairs.second(ci);
+            if (ia < 0 || ib < 0) {
                 continue;
             }
-            int ia = c.bodyA.solverIndex;
-            int ib = c.bodyB.solverIndex;
             adjacency[fill[ia]++] = ib;
             adjacency[fill[ib]++] = ia;
         }
@@ -570,9 +572,8 @@ final class ContactSolver {
         }
         // Landscape contacts (no body B) touch the static slot: their body is one step from it.
         for (int ci = 0; ci < contactCount; ci++) {
-            Contact c = all[ci];
-            int ia = c.bodyA.solverIndex;
-            if (c.pointCount != 0 && c.bodyB == null && depth[ia] == Integer.MAX_VALUE) {
+            int ia = pairs.first(ci);
+            if (ia >= 0 && pairs.second(ci) < 0 && depth[ia] == Integer.MAX_VALUE) {
                 depth[ia] = 1;
                 q[tail++] = ia;
             }
