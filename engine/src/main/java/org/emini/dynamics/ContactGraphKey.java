@@ -9,14 +9,14 @@ import static org.emini.dynamics.SolverBodies.STRIDE;
  * bodies' solver slots (or none when it does not touch, or has no body B), per body whether its
  * inverse mass is zero and whether it moves. The colouring is a function of these alone, so a tick
  * whose key equals the last one's may keep the last colouring; in a settled pile that is every tick,
- * and the colouring's breadth-first search and colour search then cost nothing. The colouring
- * records the key as it walks the same contacts and bodies, so a graph that keeps changing pays only
- * the comparison, which stops at the first difference.
+ * and the colouring's breadth-first search and colour search then cost nothing. A graph that keeps
+ * changing pays only the comparison, which stops at the first difference, and the recording
+ * ({@link #begin}, {@link #body}) as the colouring walks the bodies.
  *
  * <p>{@link #read} takes the contacts' part of the key in one pass over the contact objects, and the
  * colouring reads it from here ({@link #first(int)}, {@link #second(int)}): the objects lie
  * scattered in memory, and the colouring's four passes over them missed the cache on each contact
- * (at 20,000 bodies the colouring cost a quarter of the solve).
+ * (9 ms of a 67 ms tick at 20,000 bodies; 4 ms with the one pass).
  */
 final class ContactGraphKey {
     private int[] pairs = new int[32];
