@@ -61,6 +61,59 @@ class WorkerCountTest {
         }
     }
 
+    /**
+     * A hash of every contact event of a rain of mixed bodies, in the order the step data lists them:
+     * began (pair, points, first separation), ended (pair) and hits (speed, place).
+     */
+    private static long contactEvents(int workers) {
+        World world = new World();
+        world.setTicksPerSecond(60);
+        world.setWorkerCount(workers);
+        ((Simulation) world).setMinParallelPart(1);
+        try {
+            Scenes.ground(world, 300f, 2000f);
+            java.util.Random random = new java.util.Random(5);
+            for (int i = 0; i < 120; i++) {
+                Shape s = i % 2 == 0 ? Shape.createCircle(6 + random.nextInt(8))
+                    : Shape.createRectangle(10 + random.nextInt(10), 10 + random.nextInt(10));
+                s.setElasticity(random.nextFloat());
+                world.addBody(new Body(-300 + random.nextInt(600), -random.nextInt(600), s, true));
+            }
+            world.setHitEventThreshold(20f);
+            long h = 0;
+            int events = 0;
+            for (int t = 0; t < 400; t++) {
+                world.tick();
+                StepData d = ((Simulation) world).getStepData();
+                for (int i = 0; i < d.getBeginCount(); i++) {
+                    Contact c = d.getBeginContact(i);
+                    h = 31 * h + c.getBodyA().getId() * 1000L + c.getBodyB().getId() + 7L * c.getPointCount()
+                        + Float.floatToIntBits(c.getSeparation(0));
+                }
+                for (int i = 0; i < d.getEndCount(); i++) {
+                    h = 31 * h + d.getEndBodyA(i).getId() * 1000L + d.getEndBodyB(i).getId();
+                }
+                for (int i = 0; i < d.getHitCount(); i++) {
+                    h = 31 * h + Float.floatToIntBits(d.getHitSpeed(i)) + Float.floatToIntBits(d.getHitX(i));
+                }
+                events += d.getBeginCount() + d.getEndCount() + d.getHitCount();
+            }
+            assertTrue(events > 100, "the rain makes events: " + events);
+            return h;
+        } finally {
+            world.setWorkerCount(1);
+        }
+    }
+
+    @Test
+    void contactEventsComeInTheSameOrderForAnyThreadCount() {
+        // The narrowphase's threads set each contact's touching flag; the events are listed after, in
+        // the contacts' order.
+        long one = contactEvents(1);
+        assertEquals(one, contactEvents(2));
+        assertEquals(one, contactEvents(3));
+    }
+
     /** A resting pyramid whose thread count changes every 30 ticks (0 = always 1 thread). */
     private static long switching(boolean switchThreads) {
         World world = new World();
