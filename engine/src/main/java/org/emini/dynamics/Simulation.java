@@ -1121,12 +1121,14 @@ public abstract class Simulation {
      * are solved colour by colour, so that the contacts of one colour share no moving body, and a
      * colour is split among the threads: the results are bit for bit those of one thread, for any
      * count. The narrowphase, the contacts' preparation and the position integration are shared too
-     * (contacts are then destroyed and touches reported by the calling thread, in order); the joints,
+     * (the threads set each contact's touching flag; the calling thread then destroys contacts and
+     * reports touches, in the contacts' order); the joints,
      * the broadphase and the velocity integration are not. Parts are at least 64 contacts in the
      * narrowphase, 48 in a colour and 256 bodies; the threads spin between the passes and park between
-     * ticks. Measured with two threads on a 2-core virtual machine whose speed varies from run to run
-     * (`./emini bench`, 2026-11-28): ten 20-row pyramids 1.3 to 1.4 times the one-thread speed, rain
-     * of 10,000 bodies 1.1 to 1.5, the tumbler 1.0 to 1.2: try it on the target device. Call with 1
+     * ticks. Measured with two threads on a 2-core virtual machine (`./emini bench`, 2026-11-29): ten
+     * 20-row pyramids 1.5 to 1.6 times the one-thread speed, rain of 10,000 bodies 1.5 to 1.7, the
+     * tumbler 1.4, when the host left both cores free; in busier minutes the same build ran at 0.75 to
+     * 1.0 times one thread: try it on the target device. Call with 1
      * to stop the threads when the world is no longer used.
      *
      * @param workers the threads that share the solve, counting the one that calls {@link #tick()}:
