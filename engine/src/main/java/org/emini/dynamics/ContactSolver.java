@@ -231,12 +231,21 @@ final class ContactSolver {
                 continue;
             }
             Contact c = all[ci];
+            // The slots, positions and shapes of bodies that have a slot come from the graph key and
+            // the solver's copies, not from the body objects, which lie scattered in memory.
+            int ia = graph.first(ci);
+            int second = graph.second(ci);
+            int ib = second >= 0 ? second : 0;
             Body a = c.bodyA;
             // A landscape contact has no body B: the static slot, anchored where A is, so that its
             // arm is A's and no large world coordinate enters the separation update.
             Body b = c.bodyB != null ? c.bodyB : a;
-            int ia = a.solverIndex;
-            int ib = c.bodyB != null ? b.solverIndex : 0;
+            Shape shapeA = ia != 0 ? passBodies.shapes[ia] : a.getShape();
+            Shape shapeB = ib != 0 ? passBodies.shapes[ib] : b.getShape();
+            float ax = ia != 0 ? st[ia * STRIDE + SolverBodies.X] : a.x;
+            float ay = ia != 0 ? st[ia * STRIDE + SolverBodies.Y] : a.y;
+            float bx = c.bodyB == null ? ax : (ib != 0 ? st[ib * STRIDE + SolverBodies.X] : b.x);
+            float by = c.bodyB == null ? ay : (ib != 0 ? st[ib * STRIDE + SolverBodies.Y] : b.y);
             contacts[k] = c;
             int fo = k * CS;
             int io = k * CI;
@@ -291,8 +300,8 @@ final class ContactSolver {
             // created 330 units of angular momentum when only the ball's arm was moved). Two
             // circles keep the midpoint unless one of them cannot move.
             float half = c.pointCount > 0 ? 0.5f * c.separation0 : 0f;
-            float rA = circleRadius(a, c.partA);
-            float rB = c.bodyB != null ? circleRadius(b, c.partB) : 0f;
+            float rA = circleRadius(shapeA, c.partA);
+            float rB = c.bodyB != null ? circleRadius(shapeB, c.partB) : 0f;
             float shift = 0f;
             if (rA > 0f && (rB == 0f || mB == 0f)) {
                 shift = -half;
@@ -306,17 +315,17 @@ final class ContactSolver {
             f[fo + CIRCLE_A] = kA;
             f[fo + CIRCLE_B] = kB;
             f[fo + SHIFT] = mA != 0f && mB != 0f && c.bodyB != null && level[ia] == 0 && level[ib] == 0
-                ? 0.2f * Math.min(ContactManager.part(a.getShape(), c.partA).getBoundingRadius(),
-                    ContactManager.part(b.getShape(), c.partB).getBoundingRadius())
+                ? 0.2f * Math.min(ContactManager.part(shapeA, c.partA).getBoundingRadius(),
+                    ContactManager.part(shapeB, c.partB).getBoundingRadius())
                 : 0f;
             for (int p = 0; p < c.pointCount; p++) {
                 int po = fo + P0 + p * PS;
                 float cpx = c.pointX(p);
                 float cpy = c.pointY(p);
-                float rax = cpx - a.x;
-                float ray = cpy - a.y;
-                float rbx = cpx - b.x;
-                float rby = cpy - b.y;
+                float rax = cpx - ax;
+                float ray = cpy - ay;
+                float rbx = cpx - bx;
+                float rby = cpy - by;
                 if (shift != 0f) {
                     rax += shift * nx;
                     ray += shift * ny;
@@ -397,9 +406,9 @@ final class ContactSolver {
         return shift > max ? max : (shift < -max ? -max : shift);
     }
 
-    /** The radius of a body's part if it is a circle, else 0. */
-    private static float circleRadius(Body body, int part) {
-        Shape shape = ContactManager.part(body.getShape(), part);
+    /** The radius of a shape's part if it is a circle, else 0. */
+    private static float circleRadius(Shape whole, int part) {
+        Shape shape = ContactManager.part(whole, part);
         return shape.getType() == Shape.TYPE_CIRCLE ? ((Circle) shape).getRadius() : 0f;
     }
 

@@ -1,5 +1,7 @@
 package org.emini.dynamics;
 
+import org.emini.shape.Shape;
+
 import java.util.Arrays;
 import org.emini.math.EMath;
 
@@ -45,6 +47,8 @@ final class SolverBodies {
     // Whether any slot owes motion this substep.
     boolean owing;
     Body[] bodies = new Body[8];
+    // Each slot's shape: the contact prepare reads it here rather than from the scattered bodies.
+    Shape[] shapes = new Shape[8];
     int count;
     // The kinematic bodies among them: the fast-body sweep then looks at moving bodies too.
     int kinematicCount;
@@ -55,6 +59,7 @@ final class SolverBodies {
         if (bodies.length < need) {
             int n = Math.max(need, bodies.length * 2);
             bodies = new Body[n];
+            shapes = new Shape[n];
             state = new float[n * STRIDE];
             alpha = new float[n];
             owed = new float[n * 3];
@@ -80,6 +85,7 @@ final class SolverBodies {
     int add(Body b, float gravityX, float gravityY, long tick) {
         int slot = count++;
         bodies[slot] = b;
+        shapes[slot] = b.getShape();
         if (b.isKinematic()) {
             kinematicCount++;
         }
@@ -259,6 +265,7 @@ final class SolverBodies {
                 bad = b;
             }
             bodies[i] = null;
+            shapes[i] = null;
         }
         return bad;
     }
