@@ -15,6 +15,8 @@ import static org.emini.dynamics.SolverBodies.STRIDE;
 import static org.emini.dynamics.SolverBodies.VX;
 import static org.emini.dynamics.SolverBodies.VY;
 import static org.emini.dynamics.SolverBodies.W;
+import static org.emini.dynamics.SolverBodies.X;
+import static org.emini.dynamics.SolverBodies.Y;
 
 import org.emini.internal.WorkerPool;
 
@@ -236,16 +238,18 @@ final class ContactSolver {
             int ia = graph.first(ci);
             int second = graph.second(ci);
             int ib = second >= 0 ? second : 0;
+            int oa = ia * STRIDE;
+            int ob = ib * STRIDE;
             Body a = c.bodyA;
             // A landscape contact has no body B: the static slot, anchored where A is, so that its
             // arm is A's and no large world coordinate enters the separation update.
             Body b = c.bodyB != null ? c.bodyB : a;
             Shape shapeA = ia != 0 ? passBodies.shapes[ia] : a.getShape();
             Shape shapeB = ib != 0 ? passBodies.shapes[ib] : b.getShape();
-            float ax = ia != 0 ? st[ia * STRIDE + SolverBodies.X] : a.x;
-            float ay = ia != 0 ? st[ia * STRIDE + SolverBodies.Y] : a.y;
-            float bx = c.bodyB == null ? ax : (ib != 0 ? st[ib * STRIDE + SolverBodies.X] : b.x);
-            float by = c.bodyB == null ? ay : (ib != 0 ? st[ib * STRIDE + SolverBodies.Y] : b.y);
+            float ax = ia != 0 ? st[oa + X] : a.x;
+            float ay = ia != 0 ? st[oa + Y] : a.y;
+            float bx = c.bodyB == null ? ax : (ib != 0 ? st[ob + X] : b.x);
+            float by = c.bodyB == null ? ay : (ib != 0 ? st[ob + Y] : b.y);
             contacts[k] = c;
             int fo = k * CS;
             int io = k * CI;
@@ -258,8 +262,6 @@ final class ContactSolver {
             f[fo + NY] = ny;
             f[fo + FRICTION] = c.friction;
             f[fo + RESTITUTION] = c.restitution;
-            int oa = ia * STRIDE;
-            int ob = ib * STRIDE;
             float mA = st[oa + IM];
             float iA = st[oa + II];
             float mB = st[ob + IM];
@@ -453,14 +455,13 @@ final class ContactSolver {
             sizes[c] = 0;
         }
         int[] colourOf = slotOf;
-        ContactGraphKey pairs = graph;
         for (int ci = 0; ci < contactCount; ci++) {
             colourOf[ci] = -1;
-            int ia = pairs.first(ci);
+            int ia = graph.first(ci);
             if (ia < 0) {
                 continue;
             }
-            int second = pairs.second(ci);
+            int second = graph.second(ci);
             int ib = second >= 0 ? second : 0;
             // Zero inverse mass on both sides (static, frozen or kinematic bodies): nothing to solve.
             if (st[ia * STRIDE + IM] == 0f && st[ib * STRIDE + IM] == 0f) {
@@ -539,10 +540,9 @@ final class ContactSolver {
             startOf[i] = 0;
         }
         int edges = 0;
-        ContactGraphKey pairs = graph;
         for (int ci = 0; ci < contactCount; ci++) {
-            int ia = pairs.first(ci);
-            int ib = pairs.second(ci);
+            int ia = graph.first(ci);
+            int ib = graph.second(ci);
             if (ia < 0 || ib < 0) {
                 continue;
             }
@@ -559,8 +559,8 @@ final class ContactSolver {
         int[] fill = queue;
         System.arraycopy(startOf, 0, fill, 0, bodyCount);
         for (int ci = 0; ci < contactCount; ci++) {
-            int ia = pairs.first(ci);
-            int ib = pairs.second(ci);
+            int ia = graph.first(ci);
+            int ib = graph.second(ci);
             if (ia < 0 || ib < 0) {
                 continue;
             }
@@ -581,8 +581,8 @@ final class ContactSolver {
         }
         // Landscape contacts (no body B) touch the static slot: their body is one step from it.
         for (int ci = 0; ci < contactCount; ci++) {
-            int ia = pairs.first(ci);
-            if (ia >= 0 && pairs.second(ci) < 0 && depth[ia] == Integer.MAX_VALUE) {
+            int ia = graph.first(ci);
+            if (ia >= 0 && graph.second(ci) < 0 && depth[ia] == Integer.MAX_VALUE) {
                 depth[ia] = 1;
                 q[tail++] = ia;
             }

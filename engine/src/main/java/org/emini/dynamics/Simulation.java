@@ -1122,14 +1122,14 @@ public abstract class Simulation {
      * colour is split among the threads: the results are bit for bit those of one thread, for any
      * count. The narrowphase, the contacts' preparation and the position integration are shared too
      * (the threads set each contact's touching flag; the calling thread then destroys contacts and
-     * reports touches, in the contacts' order); the joints,
-     * the broadphase and the velocity integration are not. Parts are at least 64 contacts in the
+     * reports touches, in the contacts' order); the joints, the broadphase and the velocity
+     * integration are not. Parts are at least 64 contacts in the
      * narrowphase, 48 in a colour and 256 bodies; the threads spin between the passes and park between
      * ticks. Measured with two threads on a 2-core virtual machine (`./emini bench`, 2026-11-29): ten
      * 20-row pyramids 1.5 to 1.6 times the one-thread speed, rain of 10,000 bodies 1.5 to 1.7, the
-     * tumbler 1.4, when the host left both cores free; in busier minutes the same build ran at 0.75 to
-     * 1.0 times one thread: try it on the target device. Call with 1
-     * to stop the threads when the world is no longer used.
+     * tumbler 1.2 to 1.4, when the host left both cores free; in busier minutes the same build ran at
+     * 0.75 to 1.0 times one thread: try it on the target device. Call with 1 to stop the threads when
+     * the world is no longer used.
      *
      * @param workers the threads that share the solve, counting the one that calls {@link #tick()}:
      *     1 to 64

@@ -1,9 +1,8 @@
 package org.emini.dynamics;
 
-import org.emini.shape.Shape;
-
 import java.util.Arrays;
 import org.emini.math.EMath;
+import org.emini.shape.Shape;
 
 /**
  * The solver's flat copy of the moving bodies' state for one tick.

@@ -38,11 +38,17 @@ class WorkerCountTest {
         }
     }
 
-    private static long pile(int workers) {
+    /** A world at 60 ticks/s whose solve is shared among this many threads, every colour split. */
+    private static World threaded(int workers) {
         World world = new World();
         world.setTicksPerSecond(60);
         world.setWorkerCount(workers);
         ((Simulation) world).setMinParallelPart(1);
+        return world;
+    }
+
+    private static long pile(int workers) {
+        World world = threaded(workers);
         try {
             Scenes.ground(world, 0f, 2000f);
             Scenes.pyramid(world, 15, 20f);
@@ -66,10 +72,7 @@ class WorkerCountTest {
      * began (pair, points, first separation), ended (pair) and hits (speed, place).
      */
     private static long contactEvents(int workers) {
-        World world = new World();
-        world.setTicksPerSecond(60);
-        world.setWorkerCount(workers);
-        ((Simulation) world).setMinParallelPart(1);
+        World world = threaded(workers);
         try {
             Scenes.ground(world, 300f, 2000f);
             java.util.Random random = new java.util.Random(5);
@@ -114,11 +117,9 @@ class WorkerCountTest {
         assertEquals(one, contactEvents(3));
     }
 
-    /** A resting pyramid whose thread count changes every 30 ticks (0 = always 1 thread). */
+    /** A resting pyramid whose thread count changes every 30 ticks, or stays 1 (switchThreads false). */
     private static long switching(boolean switchThreads) {
-        World world = new World();
-        world.setTicksPerSecond(60);
-        ((Simulation) world).setMinParallelPart(1);
+        World world = threaded(1);
         int[] counts = {1, 2, 1, 3, 2};
         try {
             Scenes.ground(world, 0f, 2000f);
