@@ -25,6 +25,7 @@ public final class Collider {
 
     private final PolygonCollider polygons = new PolygonCollider();
     private final SegmentCollider segments = new SegmentCollider(polygons);
+    private float apartGap = Float.NEGATIVE_INFINITY;
 
     /** Creates a collider with its scratch buffers. */
     public Collider() {
@@ -52,9 +53,11 @@ public final class Collider {
             float by, float bc, float bs, float speculativeDistance, Manifold out) {
         int ta = a.getType();
         int tb = b.getType();
+        apartGap = Float.NEGATIVE_INFINITY;
         if (ta == Shape.TYPE_POLYGON && tb == Shape.TYPE_POLYGON) {
             polygons.collide((Polygon) a, ax, ay, ac, as, (Polygon) b, bx, by, bc, bs,
                     speculativeDistance, out);
+            apartGap = polygons.apartGap;
         } else if (ta == Shape.TYPE_POLYGON && tb == Shape.TYPE_CIRCLE) {
             collidePolygonCircle((Polygon) a, ax, ay, ac, as, (Circle) b, bx, by, bc, bs,
                     speculativeDistance, out);
@@ -126,6 +129,7 @@ public final class Collider {
      */
     public void collideCircles(Circle a, float ax, float ay, float ac, float as, Circle b,
             float bx, float by, float bc, float bs, float speculativeDistance, Manifold out) {
+        apartGap = Float.NEGATIVE_INFINITY;
         float pax = ax + ac * a.getCenterX() - as * a.getCenterY();
         float pay = ay + as * a.getCenterX() + ac * a.getCenterY();
         float pbx = bx + bc * b.getCenterX() - bs * b.getCenterY();
@@ -137,6 +141,7 @@ public final class Collider {
         float distance = EMath.sqrt(dx * dx + dy * dy);
         float separation = distance - ra - rb;
         if (separation > speculativeDistance) {
+            apartGap = separation;
             out.pointCount = 0;
             return;
         }
@@ -179,6 +184,7 @@ public final class Collider {
      */
     public void collidePolygonCircle(Polygon a, float ax, float ay, float ac, float as, Circle b,
             float bx, float by, float bc, float bs, float speculativeDistance, Manifold out) {
+        apartGap = Float.NEGATIVE_INFINITY;
         // The circle's centre in A's local frame.
         float wx = bx + bc * b.getCenterX() - bs * b.getCenterY() - ax;
         float wy = by + bs * b.getCenterX() + bc * b.getCenterY() - ay;
@@ -198,6 +204,7 @@ public final class Collider {
             }
         }
         if (faceSeparation - radius > speculativeDistance) {
+            apartGap = faceSeparation - radius;
             out.pointCount = 0;
             return;
         }
@@ -231,6 +238,9 @@ public final class Collider {
         float dy = cy - vy;
         float distance = EMath.sqrt(dx * dx + dy * dy);
         if (distance - radius > speculativeDistance) {
+            // The distance to the polygon: had the centre moved into a face's region, that face's
+            // separation would be the distance, and the first test would find the shapes apart.
+            apartGap = distance - radius;
             out.pointCount = 0;
             return;
         }
@@ -309,6 +319,19 @@ public final class Collider {
      */
     public int getSegmentSide() {
         return segments.foundSide;
+    }
+
+    /**
+     * After a collide that found the shapes apart (no points): the gap by the measure that decided
+     * it, computed in A's frame: for two polygons the largest separation of B from one of A's faces,
+     * else the distance between the shapes. Either changes by no more than any point of B moves, as
+     * seen from A, so while none moves by the gap less the speculative distance, colliding the
+     * shapes again finds them apart. Negative infinity after a collide that found points.
+     *
+     * @return the gap (px)
+     */
+    public float getApartGap() {
+        return apartGap;
     }
 
     /** Writes a one-point manifold given in A's local frame, converting it to the world. */

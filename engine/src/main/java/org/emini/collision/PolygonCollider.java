@@ -31,9 +31,15 @@ final class PolygonCollider {
 
     /** Edge index found by the last {@link #maxSeparation} call. */
     private int foundEdge;
+    /**
+     * After a {@link #collide} that found the polygons apart: the largest separation of B from one
+     * of A's faces (in A's frame, where A's faces stay put); negative infinity otherwise.
+     */
+    float apartGap;
 
     void collide(Polygon a, float pax, float pay, float ac, float as, Polygon b, float pbx,
             float pby, float bc, float bs, float speculativeDistance, Manifold out) {
+        apartGap = Float.NEGATIVE_INFINITY;
         int na = a.getVertexCount();
         int nb = b.getVertexCount();
         for (int i = 0; i < na; i++) {
@@ -134,6 +140,7 @@ final class PolygonCollider {
         float sepB = maxSeparation(bx, by, bnx, bny, nb, facesB, ax, ay, na);
         int edgeB = foundEdge;
         if (sepA > speculativeDistance || sepB > speculativeDistance) {
+            apartGap = sepA;
             out.pointCount = 0;
             return false;
         }

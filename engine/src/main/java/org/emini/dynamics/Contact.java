@@ -69,6 +69,9 @@ public final class Contact {
     // A's in the world for a landscape contact), the normal in that frame, and each point's two
     // surface points, on A in A's frame and on B in B's frame (the world for a landscape contact).
     boolean reusable;
+    // ManifoldReuse for a pair found apart (no points): the separation of B from A's nearest face
+    // then, 0 when not remembered; the pose fields above hold where B was.
+    float apartGap;
     float poseX;
     float poseY;
     float poseC;
@@ -261,7 +264,9 @@ public final class Contact {
     }
 
     /**
-     * The x component of the unit normal, pointing from body A to body B.
+     * The x component of the unit normal, pointing from body A to body B. With no points (the
+     * bodies apart, as when the contact ends) it is the normal of the last tick that had points,
+     * (0, 0) if none had.
      *
      * @return normal x
      */
@@ -271,7 +276,7 @@ public final class Contact {
     }
 
     /**
-     * The y component of the unit normal, pointing from body A to body B.
+     * The y component of the unit normal, pointing from body A to body B ({@link #getNormalX()}).
      *
      * @return normal y
      */

@@ -149,6 +149,8 @@ final class ContactManager implements PairCallback, QueryCallback {
         c.partA = parts.part(keyA);
         c.partB = b != null ? parts.part(keyB) : 0;
         c.pointCount = 0;
+        c.normalX = 0f;
+        c.normalY = 0f;
         c.touching = false;
         c.filterDirty = false;
         c.setImpulses(0, 0f, 0f, 0f);
@@ -264,6 +266,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         contacts[count] = null;
         c.index = -1;
         c.reusable = false;
+        c.apartGap = 0f;
         c.generation++;
         c.bodyA = null;
         c.bodyB = null;

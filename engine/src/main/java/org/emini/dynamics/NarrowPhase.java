@@ -43,16 +43,22 @@ final class NarrowPhase {
         float sweep = dt * (sweepSpeed(a) + sweepSpeed(b));
         Shape sa = a.getShape();
         Shape sb = b.getShape();
-        if (ManifoldReuse.reuse(c, a, b, sweep, reuseTolerance)) {
+        Shape pa = ContactManager.part(sa, c.partA);
+        Shape pb = ContactManager.part(sb, c.partB);
+        // Still apart, as colliding would find: nothing changes but the factors, as in update.
+        if (c.pointCount == 0 && ManifoldReuse.staysApart(c, a, b, pa.getBoundingRadius(), pb.getBoundingRadius(),
+            speculative + sweep)) {
+            c.friction = sa.getFriction() * sb.getFriction();
+            c.restitution = sa.getElasticity() * sb.getElasticity();
+        } else if (ManifoldReuse.reuse(c, a, b, sweep, reuseTolerance)) {
             c.friction = sa.getFriction() * sb.getFriction();
             c.restitution = sa.getElasticity() * sb.getElasticity();
         } else {
-            Shape pa = ContactManager.part(sa, c.partA);
-            Shape pb = ContactManager.part(sb, c.partB);
             collider.collide(pa, a.x, a.y, a.c, a.s, pb, b.x, b.y, b.c, b.s, speculative + sweep, manifold);
             update(c, manifold, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity());
             ManifoldReuse.remember(c, a, b, pa.getType() != Shape.TYPE_CIRCLE && pb.getType() != Shape.TYPE_CIRCLE, sweep,
                 reuseTolerance);
+            ManifoldReuse.rememberApart(c, a, b, manifold.pointCount == 0 ? collider.getApartGap() : 0f);
         }
         return ALIVE;
     }
@@ -113,8 +119,11 @@ final class NarrowPhase {
         int id0 = c.id0;
         int id1 = c.id1;
         c.pointCount = m.pointCount;
-        c.normalX = m.normalX;
-        c.normalY = m.normalY;
+        // Apart, the collider leaves the normal of whatever it collided before: the contact keeps its own.
+        if (m.pointCount > 0) {
+            c.normalX = m.normalX;
+            c.normalY = m.normalY;
+        }
         c.friction = friction;
         c.restitution = restitution;
         for (int p = 0; p < m.pointCount; p++) {

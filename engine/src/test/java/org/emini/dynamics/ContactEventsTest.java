@@ -81,6 +81,47 @@ class ContactEventsTest {
         assertTrue(touching.isEmpty(), "every begin ended once its bodies were gone: " + touching);
     }
 
+    @Test
+    void aContactApartReportsTheNormalOfItsLastTouchOrNone() {
+        // A box rests against a wall (a sideways normal); another falls onto the ground from 3 px, found
+        // apart while the fat boxes overlap, lands, then is thrown up. Apart, the contact's normal is
+        // (0, 0) before it first touches and the ground's after, never another contact's.
+        World world = new World();
+        world.setTicksPerSecond(60);
+        world.setGravity(0f, 200f);
+        Body ground = new Body(0f, 10f, Shape.createRectangle(600f, 20f), false);
+        world.addBody(ground);
+        world.addBody(new Body(-100f, -40f, Shape.createRectangle(20f, 100f), false));
+        world.addBody(new Body(-80f, -10f, Shape.createRectangle(20f, 20f), true));
+        Body faller = new Body(100f, -13f, Shape.createRectangle(20f, 20f), true);
+        world.addBody(faller);
+        world.tick();
+        Contact onGround = null;
+        for (int i = 0; i < world.getContactCount(); i++) {
+            Contact c = world.getContact(i);
+            if (c.getBodyA() == faller || c.getBodyB() == faller) {
+                onGround = c;
+            }
+        }
+        assertTrue(onGround != null && onGround.getPointCount() == 0, "found apart first");
+        assertEquals(0f, onGround.getNormalX());
+        assertEquals(0f, onGround.getNormalY());
+        for (int t = 0; t < 60 && onGround.getPointCount() == 0; t++) {
+            world.tick();
+        }
+        assertTrue(onGround.getPointCount() > 0, "landed");
+        float nx = onGround.getNormalX();
+        float ny = onGround.getNormalY();
+        assertEquals(1f, Math.abs(ny), 1e-5f);
+        faller.setVelocity(0f, -300f);
+        for (int t = 0; t < 3; t++) {
+            world.tick();
+        }
+        assertTrue(onGround.getHandle() != 0L && onGround.getPointCount() == 0, "thrown apart, the contact kept");
+        assertEquals(nx, onGround.getNormalX());
+        assertEquals(ny, onGround.getNormalY());
+    }
+
     private static String key(Body a, Body b) {
         int ia = a.getId();
         int ib = b == null ? -1 : b.getId();
