@@ -900,7 +900,7 @@ final class ContactSolver {
                         float px = (d1 + d2) * nx;
                         float py = (d1 + d2) * ny;
                         if (!useBias) {
-                            marked |= markHot(worker, mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, Math.max((d1 < 0f ? -d1 : d1) * f[p1 + KN], (d2 < 0f ? -d2 : d2) * f[p2 + KN]),
+                            marked |= markHot(worker, mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, Math.max(Math.abs(d1) * f[p1 + KN], Math.abs(d2) * f[p2 + KN]),
                                 hotTolerance, current);
                         }
                         vax -= mA * px;
@@ -955,7 +955,7 @@ final class ContactSolver {
                     f[po + MAXIMP] = d;
                 }
                 if (!useBias) {
-                    marked |= markHot(worker, mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, (d < 0f ? -d : d) * f[po + KN], hotTolerance, current);
+                    marked |= markHot(worker, mA == 0f ? 0 : ia, mB == 0f ? 0 : ib, Math.abs(d) * f[po + KN], hotTolerance, current);
                 }
                 float px = d * nx;
                 float py = d * ny;
@@ -1003,7 +1003,7 @@ final class ContactSolver {
                     float dn = f[po + NIMP] - warm[4 * k + 2 * p];
                     float dt = f[po + TIMP] - warm[4 * k + 2 * p + 1];
                     float tm = f[po + TMASS];
-                    float dv = Math.max((dn < 0f ? -dn : dn) * f[po + KN], tm > 0f ? (dt < 0f ? -dt : dt) / tm : 0f);
+                    float dv = Math.max(Math.abs(dn) * f[po + KN], tm > 0f ? Math.abs(dt) / tm : 0f);
                     float sep = (dpx + qbc * rbx - qbs * rby - qac * rax + qas * ray) * nx
                         + (dpy + qbs * rbx + qbc * rby - qas * rax - qac * ray) * ny
                         + (f[fo + CIRCLE_A] * qac - f[fo + CIRCLE_B] * qbc) + f[po + BASE_SEP];

@@ -106,11 +106,11 @@ final class ManifoldReuse {
             float rs = frameS(a, b);
             turnSin = rs * c.poseC - rc * c.poseS;
             turnCos = rc * c.poseC + rs * c.poseS;
-            moved = abs(px - c.poseX) + abs(py - c.poseY) + abs(turnSin) * b.getShape().getBoundingRadius();
+            moved = Math.abs(px - c.poseX) + Math.abs(py - c.poseY) + Math.abs(turnSin) * b.getShape().getBoundingRadius();
         } else {
             turnSin = as * c.poseC - ac * c.poseS;
             turnCos = ac * c.poseC + as * c.poseS;
-            moved = abs(a.x - c.poseX) + abs(a.y - c.poseY) + abs(turnSin) * a.getShape().getBoundingRadius();
+            moved = Math.abs(a.x - c.poseX) + Math.abs(a.y - c.poseY) + Math.abs(turnSin) * a.getShape().getBoundingRadius();
         }
         // The sine bounds a point's travel for turns under a quarter; a half-turn has a small sine too.
         if (!(moved + sweep < tolerance) || !(turnCos > 0f)) {
@@ -208,12 +208,8 @@ final class ManifoldReuse {
         float turnCos = rc * c.poseC + rs * c.poseS;
         // A point at distance r from B's origin moves r times the chord of the turn, at most
         // r (|sin| + |1 − cos|); the translation's two components bound its length too.
-        float moved = abs(px - c.poseX) + abs(py - c.poseY) + (abs(turnSin) + abs(1f - turnCos)) * radiusB;
-        float slack = APART_SLACK * (1f + abs(px) + abs(py) + radiusA + radiusB);
+        float moved = Math.abs(px - c.poseX) + Math.abs(py - c.poseY) + (Math.abs(turnSin) + Math.abs(1f - turnCos)) * radiusB;
+        float slack = APART_SLACK * (1f + Math.abs(px) + Math.abs(py) + radiusA + radiusB);
         return moved + margin + slack < gap;
-    }
-
-    private static float abs(float v) {
-        return v < 0f ? -v : v;
     }
 }

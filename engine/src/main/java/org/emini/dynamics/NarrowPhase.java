@@ -103,11 +103,8 @@ final class NarrowPhase {
         if (!b.awake) {
             return 0f;
         }
-        float vx = b.vx < 0f ? -b.vx : b.vx;
-        float vy = b.vy < 0f ? -b.vy : b.vy;
-        float w = b.w < 0f ? -b.w : b.w;
         // |v| ≤ |vx| + |vy|: a cheap, conservative bound.
-        return vx + vy + w * b.getShape().getBoundingRadius();
+        return Math.abs(b.vx) + Math.abs(b.vy) + Math.abs(b.w) * b.getShape().getBoundingRadius();
     }
 
     private static void update(Contact c, Manifold m, float friction, float restitution) {
