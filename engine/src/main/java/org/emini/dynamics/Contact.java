@@ -69,8 +69,8 @@ public final class Contact {
     // A's in the world for a landscape contact), the normal in that frame, and each point's two
     // surface points, on A in A's frame and on B in B's frame (the world for a landscape contact).
     boolean reusable;
-    // ManifoldReuse for a pair found apart (no points): the separation of B from A's nearest face
-    // then, 0 when not remembered; the pose fields above hold where B was.
+    // ManifoldReuse for a pair found apart (no points): the gap the collider measured then
+    // (Collider.getApartGap), 0 when not remembered; the pose fields below hold where B was.
     float apartGap;
     float poseX;
     float poseY;
