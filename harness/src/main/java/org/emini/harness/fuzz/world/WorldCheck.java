@@ -114,6 +114,9 @@ public final class WorldCheck {
         }
         if (allocation != null && clearError == null) {
             Violation v = allocation.verdict(tick);
+            if (v != null && !found.containsKey(ViolationKind.EXCEPTION) && !found.containsKey(ViolationKind.NON_FINITE)) {
+                v = stillAllocating(a, allocation, v, tick);
+            }
             if (v != null) {
                 found.put(v.kind(), v);
             }
@@ -121,6 +124,26 @@ public final class WorldCheck {
         List<Violation> list = new ArrayList<>(found.values());
         list.sort((x, y) -> Integer.compare(x.tick(), y.tick()));
         return new Result(list, tick, clearError);
+    }
+
+    /**
+     * An allocation verdict stands only if the world, ticked as long again, allocates there too
+     * ({@link AllocationCheck#continued}); a tick that throws there leaves the verdict as it was.
+     */
+    private static Violation stillAllocating(FuzzWorld a, AllocationCheck first, Violation v, int ticks) {
+        AllocationCheck more = first.continued();
+        for (int t = 0; t < ticks; t++) {
+            long before = METER.bytes();
+            try {
+                a.tick();
+            } catch (RuntimeException | StackOverflowError e) {
+                return v;
+            }
+            more.record(a, ticks + t, METER.between(before, METER.bytes()));
+        }
+        Violation again = more.verdict(ticks);
+        return again == null ? null
+            : new Violation(ViolationKind.ALLOCATION, v.tick(), v.message() + "; again in " + ticks + " more ticks: " + again.message());
     }
 
     private static Map<ViolationKind, TickCheck> checks(Recipe r, Set<ViolationKind> wanted) {

@@ -147,6 +147,20 @@ class InvariantChecksTest {
     }
 
     @Test
+    void arraysThatGrowOnceEachAreNotSteadyAllocation() {
+        // Four arrays of the same size made once each after warm-up, as doubling arrays reach the same
+        // capacity in different ticks: the same size four times, but nothing more once the world goes on.
+        int[][] grown = new int[4][];
+        Consumer<FuzzWorld> growing = w -> w.world().addExternalForce((world, dt) -> {
+            long t = world.getTickCount();
+            if (t >= 60 && t < 80 && t % 5 == 0) {
+                grown[(int) (t - 60) / 5] = new int[64];
+            }
+        });
+        assertNull(run(drop(), ViolationKind.ALLOCATION, growing).of(ViolationKind.ALLOCATION));
+    }
+
+    @Test
     void twoBuildsThatDifferAreCaught() {
         int[] builds = {0};
         Violation v = run(drop(), ViolationKind.NONDETERMINISM, w -> {
