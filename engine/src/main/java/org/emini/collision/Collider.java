@@ -53,7 +53,6 @@ public final class Collider {
             float by, float bc, float bs, float speculativeDistance, Manifold out) {
         int ta = a.getType();
         int tb = b.getType();
-        apartGap = Float.NEGATIVE_INFINITY;
         if (ta == Shape.TYPE_POLYGON && tb == Shape.TYPE_POLYGON) {
             polygons.collide((Polygon) a, ax, ay, ac, as, (Polygon) b, bx, by, bc, bs,
                     speculativeDistance, out);

@@ -151,8 +151,9 @@ final class ManifoldReuse {
     }
 
     /**
-     * Remembers a body pair the narrowphase found apart, with the collider's gap
-     * ({@link org.emini.collision.Collider#getApartGap()}), for {@link #staysApart}.
+     * Remembers a body pair the narrowphase just collided, with the collider's gap
+     * ({@link org.emini.collision.Collider#getApartGap()}), for {@link #staysApart}: a pair found
+     * touching, or apart by no gap, is not remembered.
      */
     static void rememberApart(Contact c, Body a, Body b, float gap) {
         if (!(gap > 0f)) {

@@ -45,12 +45,9 @@ final class NarrowPhase {
         Shape sb = b.getShape();
         Shape pa = ContactManager.part(sa, c.partA);
         Shape pb = ContactManager.part(sb, c.partB);
-        // Still apart, as colliding would find: nothing changes but the factors, as in update.
+        // Still apart, as colliding would find, or points reused: only the factors are set again.
         if (c.pointCount == 0 && ManifoldReuse.staysApart(c, a, b, pa.getBoundingRadius(), pb.getBoundingRadius(),
-            speculative + sweep)) {
-            c.friction = sa.getFriction() * sb.getFriction();
-            c.restitution = sa.getElasticity() * sb.getElasticity();
-        } else if (ManifoldReuse.reuse(c, a, b, sweep, reuseTolerance)) {
+            speculative + sweep) || ManifoldReuse.reuse(c, a, b, sweep, reuseTolerance)) {
             c.friction = sa.getFriction() * sb.getFriction();
             c.restitution = sa.getElasticity() * sb.getElasticity();
         } else {
@@ -58,7 +55,7 @@ final class NarrowPhase {
             update(c, manifold, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity());
             ManifoldReuse.remember(c, a, b, pa.getType() != Shape.TYPE_CIRCLE && pb.getType() != Shape.TYPE_CIRCLE, sweep,
                 reuseTolerance);
-            ManifoldReuse.rememberApart(c, a, b, manifold.pointCount == 0 ? collider.getApartGap() : 0f);
+            ManifoldReuse.rememberApart(c, a, b, collider.getApartGap());
         }
         return ALIVE;
     }

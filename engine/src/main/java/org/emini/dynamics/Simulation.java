@@ -1128,8 +1128,8 @@ public abstract class Simulation {
      * ticks. Measured with two threads on a 2-core virtual machine (`./emini bench`, 2026-11-29, after
      * that day's one-thread gains): ten 20-row pyramids 1.3 to 1.45 times the one-thread speed, rain of
      * 5,000 to 20,000 bodies 1.35 to 1.5, the tumbler 1.2, when the host left both cores free; in busier
-     * minutes two threads ran at 0.75 to 1.0 times one: try it on the target device. Call with 1 to stop the threads when
-     * the world is no longer used.
+     * minutes two threads ran at 0.75 to 1.0 times one: try it on the target device. Call with 1 to
+     * stop the threads when the world is no longer used.
      *
      * @param workers the threads that share the solve, counting the one that calls {@link #tick()}:
      *     1 to 64
