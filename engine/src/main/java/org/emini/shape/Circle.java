@@ -32,7 +32,7 @@ public final class Circle extends Shape {
      *     small
      */
     public Circle(float radius, float centerX, float centerY) {
-        super(validated(radius, centerX, centerY));
+        super(validated(radius, centerX, centerY), TYPE_CIRCLE);
         this.radius = radius;
         this.centerX = centerX;
         this.centerY = centerY;
@@ -54,16 +54,6 @@ public final class Circle extends Shape {
                             + MIN_SIZE + " px)");
         }
         return ShapeGeometry.ofCircle(radius, centerX, centerY);
-    }
-
-    /**
-     * {@inheritDoc}
-     *
-     * @return {@link Shape#TYPE_CIRCLE}
-     */
-    @Override
-    public int getType() {
-        return TYPE_CIRCLE;
     }
 
     /**

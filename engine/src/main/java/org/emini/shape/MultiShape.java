@@ -31,7 +31,7 @@ public final class MultiShape extends Shape {
      * @throws IllegalArgumentException if there are no parts, or a part is null or a multi-shape
      */
     public MultiShape(Shape... parts) {
-        super(ShapeGeometry.ofParts(validated(parts)));
+        super(ShapeGeometry.ofParts(validated(parts)), TYPE_MULTI);
         this.parts = parts.clone();
     }
 
@@ -50,16 +50,6 @@ public final class MultiShape extends Shape {
             }
         }
         return parts;
-    }
-
-    /**
-     * {@inheritDoc}
-     *
-     * @return {@link Shape#TYPE_MULTI}
-     */
-    @Override
-    public int getType() {
-        return TYPE_MULTI;
     }
 
     /**

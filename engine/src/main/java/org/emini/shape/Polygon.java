@@ -53,7 +53,7 @@ public final class Polygon extends Shape {
     }
 
     private Polygon(ShapeGeometry geometry) {
-        super(geometry);
+        super(geometry, TYPE_POLYGON);
         float[] ccw = geometry.vertices;
         int n = ccw.length / 2;
         vx = new float[n];
@@ -73,16 +73,6 @@ public final class Polygon extends Shape {
             nx[i] = ey * inv;
             ny[i] = -ex * inv;
         }
-    }
-
-    /**
-     * {@inheritDoc}
-     *
-     * @return {@link Shape#TYPE_POLYGON}
-     */
-    @Override
-    public int getType() {
-        return TYPE_POLYGON;
     }
 
     /**

@@ -63,6 +63,9 @@ public abstract class Shape {
     private final float centroidY;
     private final float unitInertia;
     private final float boundingRadius;
+    // A field, not an override per class: the engine's hot loops ask every shape its type, and a call
+    // site that meets all three classes would be a virtual call there.
+    private final int type;
 
     private float mass;
     private float inverseMass;
@@ -73,7 +76,8 @@ public abstract class Shape {
     private int id = -1;
     private Object userData;
 
-    Shape(ShapeGeometry geometry) {
+    Shape(ShapeGeometry geometry, int type) {
+        this.type = type;
         area = geometry.area;
         centroidX = geometry.centroidX;
         centroidY = geometry.centroidY;
@@ -192,7 +196,9 @@ public abstract class Shape {
      *
      * @return {@link #TYPE_CIRCLE}, {@link #TYPE_POLYGON} or {@link #TYPE_MULTI}
      */
-    public abstract int getType();
+    public final int getType() {
+        return type;
+    }
 
     /**
      * Computes the axis-aligned bounding box of the shape placed at a position and rotation.
