@@ -345,7 +345,8 @@ public final class SolverSettings {
      * Gauss–Seidel carries an impact through a column of n bodies in about n² passes: at 10, ten
      * boxes dropped together onto the ground with elasticity 0 rebounded at 25–35% of the impact
      * speed and a grid created overlapping spread at 136 px/s; at 30, under 3% and 29 px/s. A pile that
-     * keeps tumbling pays for them (the tumbler benchmark about 6%).
+     * keeps tumbling pays for them: the tumbler benchmark makes about 69 a tick (17 a substep) over
+     * 10,500 contacts in all, 0.73 ms of its 4.6 (2026-11-29).
      *
      * @return the passes
      */
