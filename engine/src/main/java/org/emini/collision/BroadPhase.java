@@ -118,8 +118,9 @@ public final class BroadPhase {
     }
 
     /**
-     * Bounds the pairs one {@link #updatePairs} collects, so that many proxies in one spot (n of them
-     * overlap in n(n − 1)/2 pairs) cost bounded time and memory. Default: no limit.
+     * Bounds the pairs one {@link #updatePairs} collects (known pairs are not collected), so that many
+     * proxies in one spot (n of them overlap in n(n − 1)/2 pairs) cost bounded time and memory.
+     * Default: no limit.
      *
      * @param limit the most pairs collected, &gt; 0
      * @throws IllegalArgumentException if limit is not positive
@@ -377,8 +378,9 @@ public final class BroadPhase {
      * or touched, and not destroyed since), the tree is queried with its fat AABB. Every pair of
      * distinct proxies whose fat AABBs overlap, of which at least one is in the move buffer and at
      * least one is dynamic, is reported exactly once, in increasing order of (smaller id, larger id), with the user data of
-     * the smaller id first. No other pair is reported. Beyond the {@linkplain #setPairLimit pair
-     * limit}, collection stops (in move-buffer order) and the remaining pairs are dropped.
+     * the smaller id first, unless the callback {@linkplain PairCallback#isKnownPair knows it}. No
+     * other pair is reported. Beyond the {@linkplain #setPairLimit pair limit}, collection stops (in
+     * move-buffer order) and the remaining pairs are dropped.
      *
      * @param callback receives the pairs; it must not modify this broadphase
      * @throws IllegalArgumentException if callback is null
@@ -389,7 +391,7 @@ public final class BroadPhase {
         if (callback == null) {
             throw new IllegalArgumentException("updatePairs: callback is null");
         }
-        moved.beginPairs();
+        moved.beginPairs(callback, proxies.userData);
         for (int i = 0, n = moved.moveCount(); i < n && !moved.limitReached(); i++) {
             int proxy = moved.moved(i);
             // Moved proxies meet the dynamic ones, and the static ones too when dynamic themselves.

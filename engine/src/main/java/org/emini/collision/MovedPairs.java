@@ -22,6 +22,9 @@ final class MovedPairs implements QueryCallback {
     private int limit = Integer.MAX_VALUE;
     private boolean limitReached;
     private int queryProxy;
+    // The update's callback, asked of each pair whether it is known, and the proxies' user data.
+    private PairCallback receiver;
+    private int[] userData;
 
     MovedPairs(int proxyCapacity) {
         moveIndex = new int[proxyCapacity];
@@ -82,10 +85,12 @@ final class MovedPairs implements QueryCallback {
         return limitReached;
     }
 
-    /** Starts collecting pairs. */
-    void beginPairs() {
+    /** Starts collecting pairs, leaving out those the receiver knows. */
+    void beginPairs(PairCallback receiver, int[] userData) {
         pairCount = 0;
         limitReached = false;
+        this.receiver = receiver;
+        this.userData = userData;
     }
 
     /** Collects the pairs of one moved proxy with the proxies of a tree whose boxes meet the box. */
@@ -102,6 +107,8 @@ final class MovedPairs implements QueryCallback {
             moveIndex[moves[i]] = NULL;
         }
         moveCount = 0;
+        receiver = null;
+        userData = null;
         HeapSort.sort(pairs, pairCount);
     }
 
@@ -117,6 +124,9 @@ final class MovedPairs implements QueryCallback {
     @Override
     public boolean reportProxy(int other) {
         if (other == queryProxy || (other < queryProxy && moveIndex[other] != NULL)) {
+            return true;
+        }
+        if (receiver.isKnownPair(userData[queryProxy], userData[other])) {
             return true;
         }
         if (pairCount == limit) {

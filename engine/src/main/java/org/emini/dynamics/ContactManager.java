@@ -117,10 +117,16 @@ final class ContactManager implements PairCallback, QueryCallback {
         if (a == b || !shouldCollide(a, b)) {
             return;
         }
-        if (pairs.contains(PairCounts.parts(keyA, keyB)) || !filterAccepts(a, b) || full(1)) {
+        if (!filterAccepts(a, b) || full(1)) {
             return;
         }
         create(a, b, keyA, keyB);
+    }
+
+    /** A pair in contact is left out by the broadphase: in a moving crowd most pairs it finds are. */
+    @Override
+    public boolean isKnownPair(int keyA, int keyB) {
+        return pairs.contains(PairCounts.parts(keyA, keyB));
     }
 
     /** Whether n more contacts would exceed the world's capacity (noted for the tick if so). */

@@ -316,6 +316,46 @@ class BroadPhaseTest {
         assertEquals(expected, pairs);
     }
 
+    @Test
+    void knownPairsAreLeftOutAndDoNotCountTowardsTheLimit() {
+        BroadPhase bp = new BroadPhase(1f);
+        for (int i = 0; i < 6; i++) {
+            bp.createProxy(i, 0, i + 10, 10, i);
+        }
+        // Pairs with proxy 0 or 1 are known; the other six of the fifteen are new.
+        List<String> asked = new ArrayList<>();
+        List<String> reported = new ArrayList<>();
+        PairCallback r = new PairCallback() {
+            @Override
+            public void addPair(int userDataA, int userDataB) {
+                reported.add(userDataA + "-" + userDataB);
+            }
+
+            @Override
+            public boolean isKnownPair(int userDataA, int userDataB) {
+                assertTrue(reported.isEmpty(), "asked after a pair was reported");
+                asked.add(Math.min(userDataA, userDataB) + "-" + Math.max(userDataA, userDataB));
+                return Math.min(userDataA, userDataB) < 2;
+            }
+        };
+        bp.setPairLimit(6);
+        bp.updatePairs(r);
+        bp.validate();
+        assertFalse(bp.isPairLimitReached());
+        assertEquals(List.of("2-3", "2-4", "2-5", "3-4", "3-5", "4-5"), reported);
+        assertEquals(15, new TreeSet<>(asked).size());
+        assertEquals(15, asked.size());
+        // One pair fewer allowed: the limit counts the new pairs only, and stops at them.
+        for (int i = 0; i < 6; i++) {
+            bp.touchProxy(i);
+        }
+        reported.clear();
+        bp.setPairLimit(5);
+        bp.updatePairs(r);
+        assertTrue(bp.isPairLimitReached());
+        assertEquals(5, reported.size());
+    }
+
     // ---------------------------------------------------------------------------------------------
     // Queries and callbacks
 
