@@ -8,7 +8,8 @@ import java.util.Arrays;
  * tree is kept balanced by AVL-like rotations on the way back up from every insertion and removal,
  * so its height stays O(log n) even for sorted insertion orders (Box2D's tree, on flat arrays).
  *
- * <p>Nodes are parallel primitive arrays indexed by node id; freed nodes are reused, arrays double
+ * <p>Nodes live in primitive arrays indexed by node id, a node's box in one span of four floats and its
+ * children, height and item in one of four ints; freed nodes are reused, arrays double
  * when full, queries walk an explicit stack kept as a field, so nothing is allocated once the tree
  * has grown to the scene. The shape of the tree, and so the order in which a query reports leaves,
  * depends only on the sequence of insertions and removals: the same calls give the same results.
@@ -18,18 +19,25 @@ final class DynamicTree {
     static final int NULL = -1;
     private static final int INITIAL_CAPACITY = 16;
 
-    private float[] nodeMinX = new float[INITIAL_CAPACITY];
-    private float[] nodeMinY = new float[INITIAL_CAPACITY];
-    private float[] nodeMaxX = new float[INITIAL_CAPACITY];
-    private float[] nodeMaxY = new float[INITIAL_CAPACITY];
+    // A node's box, four floats (BOX apart), and its links and leaf data, four ints (LINK apart), so
+    // that a query reads two neighbouring spans per node instead of eight arrays.
+    private static final int BOX = 4;
+    private static final int MIN_X = 0;
+    private static final int MIN_Y = 1;
+    private static final int MAX_X = 2;
+    private static final int MAX_Y = 3;
+    private static final int LINK = 4;
+    private static final int CHILD1 = 0;
+    private static final int CHILD2 = 1;
+    /** Leaves have height 0, free nodes -1. */
+    private static final int HEIGHT = 2;
+    /** The item of a leaf, NULL for internal and free nodes. */
+    private static final int ITEM = 3;
+
+    private float[] box = new float[BOX * INITIAL_CAPACITY];
+    private int[] link = new int[LINK * INITIAL_CAPACITY];
     /** Parent of a live node; next free node of a free one. */
     private int[] nodeParent = new int[INITIAL_CAPACITY];
-    private int[] nodeChild1 = new int[INITIAL_CAPACITY];
-    private int[] nodeChild2 = new int[INITIAL_CAPACITY];
-    /** Leaves have height 0, free nodes -1. */
-    private int[] nodeHeight = new int[INITIAL_CAPACITY];
-    /** The item of a leaf, NULL for internal and free nodes. */
-    private int[] nodeItem = new int[INITIAL_CAPACITY];
     private int nodeHighWater;
     private int nodeCount;
     private int freeNodeHead = NULL;
@@ -41,11 +49,8 @@ final class DynamicTree {
     /** Adds a leaf with this box and item; returns its node id. */
     int insert(float minX, float minY, float maxX, float maxY, int item) {
         int leaf = allocateNode();
-        nodeMinX[leaf] = minX;
-        nodeMinY[leaf] = minY;
-        nodeMaxX[leaf] = maxX;
-        nodeMaxY[leaf] = maxY;
-        nodeItem[leaf] = item;
+        setBox(leaf, minX, minY, maxX, maxY);
+        link[LINK * leaf + ITEM] = item;
         insertLeaf(leaf);
         return leaf;
     }
@@ -59,30 +64,35 @@ final class DynamicTree {
     /** Gives a leaf a new box, re-inserting it; it keeps its node id. */
     void move(int leaf, float minX, float minY, float maxX, float maxY) {
         removeLeaf(leaf);
-        nodeMinX[leaf] = minX;
-        nodeMinY[leaf] = minY;
-        nodeMaxX[leaf] = maxX;
-        nodeMaxY[leaf] = maxY;
+        setBox(leaf, minX, minY, maxX, maxY);
         insertLeaf(leaf);
+    }
+
+    private void setBox(int node, float minX, float minY, float maxX, float maxY) {
+        int b = BOX * node;
+        box[b + MIN_X] = minX;
+        box[b + MIN_Y] = minY;
+        box[b + MAX_X] = maxX;
+        box[b + MAX_Y] = maxY;
     }
 
     /** Grows a leaf's box by {@code by} on every side (shrinks when negative) without refitting; call {@link #refitAll}. */
     void inflate(int leaf, float by) {
-        nodeMinX[leaf] -= by;
-        nodeMinY[leaf] -= by;
-        nodeMaxX[leaf] += by;
-        nodeMaxY[leaf] += by;
+        box[BOX * leaf + MIN_X] -= by;
+        box[BOX * leaf + MIN_Y] -= by;
+        box[BOX * leaf + MAX_X] += by;
+        box[BOX * leaf + MAX_Y] += by;
     }
 
     /** Recomputes every internal box from the leaves up, one height at a time (the shape is kept). */
     void refitAll() {
         int top = 0;
         for (int node = 0; node < nodeHighWater; node++) {
-            top = Math.max(top, nodeHeight[node]);
+            top = Math.max(top, height(node));
         }
         for (int height = 1; height <= top; height++) {
             for (int node = 0; node < nodeHighWater; node++) {
-                if (nodeHeight[node] == height) {
+                if (height(node) == height) {
                     refit(node);
                 }
             }
@@ -92,39 +102,55 @@ final class DynamicTree {
     /** Translates every box by (−dx, −dy); rounding is monotonic, so internal boxes stay the unions. */
     void shift(float dx, float dy) {
         for (int i = 0; i < nodeHighWater; i++) {
-            if (nodeHeight[i] >= 0) {
-                nodeMinX[i] -= dx;
-                nodeMinY[i] -= dy;
-                nodeMaxX[i] -= dx;
-                nodeMaxY[i] -= dy;
+            if (height(i) >= 0) {
+                box[BOX * i + MIN_X] -= dx;
+                box[BOX * i + MIN_Y] -= dy;
+                box[BOX * i + MAX_X] -= dx;
+                box[BOX * i + MAX_Y] -= dy;
             }
         }
     }
 
+    private int height(int node) {
+        return link[LINK * node + HEIGHT];
+    }
+
+    private int child1(int node) {
+        return link[LINK * node + CHILD1];
+    }
+
+    private int child2(int node) {
+        return link[LINK * node + CHILD2];
+    }
+
+    private int item(int node) {
+        return link[LINK * node + ITEM];
+    }
+
     float minX(int node) {
-        return nodeMinX[node];
+        return box[BOX * node + MIN_X];
     }
 
     float minY(int node) {
-        return nodeMinY[node];
+        return box[BOX * node + MIN_Y];
     }
 
     float maxX(int node) {
-        return nodeMaxX[node];
+        return box[BOX * node + MAX_X];
     }
 
     float maxY(int node) {
-        return nodeMaxY[node];
+        return box[BOX * node + MAX_Y];
     }
 
     /** Whether a node id is a live leaf holding this item. */
     boolean holds(int node, int item) {
-        return node >= 0 && node < nodeHighWater && nodeHeight[node] == 0 && nodeItem[node] == item;
+        return node >= 0 && node < nodeHighWater && height(node) == 0 && item(node) == item;
     }
 
     /** 0 for an empty tree or a single leaf, otherwise the edges on the longest root-to-leaf path. */
     int height() {
-        return root == NULL ? 0 : nodeHeight[root];
+        return root == NULL ? 0 : height(root);
     }
 
     /**
@@ -142,13 +168,15 @@ final class DynamicTree {
             push(root);
             while (stackTop > base) {
                 int node = stack[--stackTop];
-                if (nodeMinX[node] > maxX || minX > nodeMaxX[node] || nodeMinY[node] > maxY || minY > nodeMaxY[node]) {
+                int b = BOX * node;
+                if (box[b + MIN_X] > maxX || minX > box[b + MAX_X] || box[b + MIN_Y] > maxY || minY > box[b + MAX_Y]) {
                     continue;
                 }
-                if (nodeHeight[node] > 0) {
-                    push(nodeChild1[node]);
-                    push(nodeChild2[node]);
-                } else if (!callback.reportProxy(nodeItem[node])) {
+                int l = LINK * node;
+                if (link[l + HEIGHT] > 0) {
+                    push(link[l + CHILD1]);
+                    push(link[l + CHILD2]);
+                } else if (!callback.reportProxy(link[l + ITEM])) {
                     return false;
                 }
             }
@@ -173,13 +201,15 @@ final class DynamicTree {
             push(root);
             while (stackTop > base) {
                 int node = stack[--stackTop];
-                if (!sweep.meets(nodeMinX[node], nodeMinY[node], nodeMaxX[node], nodeMaxY[node])) {
+                int b = BOX * node;
+                if (!sweep.meets(box[b + MIN_X], box[b + MIN_Y], box[b + MAX_X], box[b + MAX_Y])) {
                     continue;
                 }
-                if (nodeHeight[node] > 0) {
-                    push(nodeChild1[node]);
-                    push(nodeChild2[node]);
-                } else if (!callback.reportProxy(nodeItem[node])) {
+                int l = LINK * node;
+                if (link[l + HEIGHT] > 0) {
+                    push(link[l + CHILD1]);
+                    push(link[l + CHILD2]);
+                } else if (!callback.reportProxy(link[l + ITEM])) {
                     return false;
                 }
             }
@@ -205,41 +235,35 @@ final class DynamicTree {
             node = freeNodeHead;
             freeNodeHead = nodeParent[node];
         } else {
-            if (nodeHighWater == nodeHeight.length) {
+            if (nodeHighWater == nodeParent.length) {
                 growNodes();
             }
             node = nodeHighWater++;
         }
         nodeParent[node] = NULL;
-        nodeChild1[node] = NULL;
-        nodeChild2[node] = NULL;
-        nodeHeight[node] = 0;
-        nodeItem[node] = NULL;
+        link[LINK * node + CHILD1] = NULL;
+        link[LINK * node + CHILD2] = NULL;
+        link[LINK * node + HEIGHT] = 0;
+        link[LINK * node + ITEM] = NULL;
         nodeCount++;
         return node;
     }
 
     private void releaseNode(int node) {
         nodeParent[node] = freeNodeHead;
-        nodeChild1[node] = NULL;
-        nodeChild2[node] = NULL;
-        nodeHeight[node] = -1;
-        nodeItem[node] = NULL;
+        link[LINK * node + CHILD1] = NULL;
+        link[LINK * node + CHILD2] = NULL;
+        link[LINK * node + HEIGHT] = -1;
+        link[LINK * node + ITEM] = NULL;
         freeNodeHead = node;
         nodeCount--;
     }
 
     private void growNodes() {
-        int capacity = nodeHeight.length * 2;
-        nodeMinX = Arrays.copyOf(nodeMinX, capacity);
-        nodeMinY = Arrays.copyOf(nodeMinY, capacity);
-        nodeMaxX = Arrays.copyOf(nodeMaxX, capacity);
-        nodeMaxY = Arrays.copyOf(nodeMaxY, capacity);
+        int capacity = nodeParent.length * 2;
+        box = Arrays.copyOf(box, BOX * capacity);
+        link = Arrays.copyOf(link, LINK * capacity);
         nodeParent = Arrays.copyOf(nodeParent, capacity);
-        nodeChild1 = Arrays.copyOf(nodeChild1, capacity);
-        nodeChild2 = Arrays.copyOf(nodeChild2, capacity);
-        nodeHeight = Arrays.copyOf(nodeHeight, capacity);
-        nodeItem = Arrays.copyOf(nodeItem, capacity);
     }
 
     // ------------------------------------------------------------------------------------------
@@ -256,15 +280,15 @@ final class DynamicTree {
             nodeParent[leaf] = NULL;
             return;
         }
-        float minX = nodeMinX[leaf];
-        float minY = nodeMinY[leaf];
-        float maxX = nodeMaxX[leaf];
-        float maxY = nodeMaxY[leaf];
+        float minX = minX(leaf);
+        float minY = minY(leaf);
+        float maxX = maxX(leaf);
+        float maxY = maxY(leaf);
 
         int index = root;
-        while (nodeHeight[index] > 0) {
-            int child1 = nodeChild1[index];
-            int child2 = nodeChild2[index];
+        while (height(index) > 0) {
+            int child1 = child1(index);
+            int child2 = child2(index);
             float combined = unionPerimeter(index, minX, minY, maxX, maxY);
             // Cost of a new parent for this node and the leaf.
             float cost = 2f * combined;
@@ -282,16 +306,16 @@ final class DynamicTree {
         int oldParent = nodeParent[sibling];
         int newParent = allocateNode();
         nodeParent[newParent] = oldParent;
-        nodeChild1[newParent] = sibling;
-        nodeChild2[newParent] = leaf;
+        link[LINK * newParent + CHILD1] = sibling;
+        link[LINK * newParent + CHILD2] = leaf;
         nodeParent[sibling] = newParent;
         nodeParent[leaf] = newParent;
         if (oldParent == NULL) {
             root = newParent;
-        } else if (nodeChild1[oldParent] == sibling) {
-            nodeChild1[oldParent] = newParent;
+        } else if (child1(oldParent) == sibling) {
+            link[LINK * oldParent + CHILD1] = newParent;
         } else {
-            nodeChild2[oldParent] = newParent;
+            link[LINK * oldParent + CHILD2] = newParent;
         }
         refitUpwards(newParent);
     }
@@ -304,7 +328,7 @@ final class DynamicTree {
         }
         int parent = nodeParent[leaf];
         int grandParent = nodeParent[parent];
-        int sibling = nodeChild1[parent] == leaf ? nodeChild2[parent] : nodeChild1[parent];
+        int sibling = child1(parent) == leaf ? child2(parent) : child1(parent);
         nodeParent[leaf] = NULL;
         releaseNode(parent);
         nodeParent[sibling] = grandParent;
@@ -312,10 +336,10 @@ final class DynamicTree {
             root = sibling;
             return;
         }
-        if (nodeChild1[grandParent] == parent) {
-            nodeChild1[grandParent] = sibling;
+        if (child1(grandParent) == parent) {
+            link[LINK * grandParent + CHILD1] = sibling;
         } else {
-            nodeChild2[grandParent] = sibling;
+            link[LINK * grandParent + CHILD2] = sibling;
         }
         refitUpwards(grandParent);
     }
@@ -331,13 +355,10 @@ final class DynamicTree {
 
     /** Recomputes an internal node's box and height from its children. */
     private void refit(int node) {
-        int c1 = nodeChild1[node];
-        int c2 = nodeChild2[node];
-        nodeMinX[node] = min(nodeMinX[c1], nodeMinX[c2]);
-        nodeMinY[node] = min(nodeMinY[c1], nodeMinY[c2]);
-        nodeMaxX[node] = max(nodeMaxX[c1], nodeMaxX[c2]);
-        nodeMaxY[node] = max(nodeMaxY[c1], nodeMaxY[c2]);
-        nodeHeight[node] = 1 + Math.max(nodeHeight[c1], nodeHeight[c2]);
+        int c1 = child1(node);
+        int c2 = child2(node);
+        setBox(node, min(minX(c1), minX(c2)), min(minY(c1), minY(c2)), max(maxX(c1), maxX(c2)), max(maxY(c1), maxY(c2)));
+        link[LINK * node + HEIGHT] = 1 + Math.max(height(c1), height(c2));
     }
 
     /**
@@ -346,9 +367,9 @@ final class DynamicTree {
      */
     private int balance(int a) {
         // a's own height may be stale (a new parent), so only its children's heights are used.
-        int b = nodeChild1[a];
-        int c = nodeChild2[a];
-        int diff = nodeHeight[c] - nodeHeight[b];
+        int b = child1(a);
+        int c = child2(a);
+        int diff = height(c) - height(b);
         if (diff > 1) {
             return rotateUp(a, c, true);
         }
@@ -363,11 +384,11 @@ final class DynamicTree {
      * child and takes p's shorter child in the slot where p was.
      */
     private int rotateUp(int a, int p, boolean pIsChild2) {
-        int f = nodeChild1[p];
-        int g = nodeChild2[p];
+        int f = child1(p);
+        int g = child2(p);
         int keep;
         int give;
-        if (nodeHeight[f] > nodeHeight[g]) {
+        if (height(f) > height(g)) {
             keep = f;
             give = g;
         } else {
@@ -378,19 +399,19 @@ final class DynamicTree {
         nodeParent[p] = up;
         if (up == NULL) {
             root = p;
-        } else if (nodeChild1[up] == a) {
-            nodeChild1[up] = p;
+        } else if (child1(up) == a) {
+            link[LINK * up + CHILD1] = p;
         } else {
-            nodeChild2[up] = p;
+            link[LINK * up + CHILD2] = p;
         }
-        nodeChild1[p] = a;
-        nodeChild2[p] = keep;
+        link[LINK * p + CHILD1] = a;
+        link[LINK * p + CHILD2] = keep;
         nodeParent[keep] = p;
         nodeParent[a] = p;
         if (pIsChild2) {
-            nodeChild2[a] = give;
+            link[LINK * a + CHILD2] = give;
         } else {
-            nodeChild1[a] = give;
+            link[LINK * a + CHILD1] = give;
         }
         nodeParent[give] = a;
         refit(a);
@@ -402,16 +423,16 @@ final class DynamicTree {
     private float descentCost(int child, float minX, float minY, float maxX, float maxY) {
         float combined = unionPerimeter(child, minX, minY, maxX, maxY);
         // A leaf would get a new parent of this perimeter; an internal node merely grows.
-        return nodeHeight[child] == 0 ? combined : combined - perimeter(child);
+        return height(child) == 0 ? combined : combined - perimeter(child);
     }
 
     private float perimeter(int node) {
-        return 2f * ((nodeMaxX[node] - nodeMinX[node]) + (nodeMaxY[node] - nodeMinY[node]));
+        return 2f * ((maxX(node) - minX(node)) + (maxY(node) - minY(node)));
     }
 
     private float unionPerimeter(int node, float minX, float minY, float maxX, float maxY) {
-        float w = max(nodeMaxX[node], maxX) - min(nodeMinX[node], minX);
-        float h = max(nodeMaxY[node], maxY) - min(nodeMinY[node], minY);
+        float w = max(maxX(node), maxX) - min(minX(node), minX);
+        float h = max(maxY(node), maxY) - min(minY(node), minY);
         return 2f * (w + h);
     }
 
@@ -447,29 +468,29 @@ final class DynamicTree {
                     int node = stack[--stackTop];
                     reachable++;
                     check(reachable <= nodeHighWater, owner, "cycle through node %d", node, 0);
-                    int height = nodeHeight[node];
-                    int c1 = nodeChild1[node];
-                    int c2 = nodeChild2[node];
+                    int height = height(node);
+                    int c1 = child1(node);
+                    int c2 = child2(node);
                     check(height >= 0, owner, "free node %d is in the tree", node, 0);
                     if (height == 0) {
                         leaves++;
                         check(c1 == NULL && c2 == NULL, owner, "leaf %d has child %d", node, c1 != NULL ? c1 : c2);
                         continue;
                     }
-                    check(nodeItem[node] == NULL, owner, "internal node %d has item %d", node, nodeItem[node]);
+                    check(item(node) == NULL, owner, "internal node %d has item %d", node, item(node));
                     check(c1 >= 0 && c1 < nodeHighWater, owner, "node %d has bad child1 %d", node, c1);
                     check(c2 >= 0 && c2 < nodeHighWater, owner, "node %d has bad child2 %d", node, c2);
                     check(c1 != c2, owner, "node %d has child %d twice", node, c1);
                     check(nodeParent[c1] == node, owner, "child %d of node %d has another parent", c1, node);
                     check(nodeParent[c2] == node, owner, "child %d of node %d has another parent", c2, node);
-                    check(nodeHeight[c1] >= 0 && nodeHeight[c2] >= 0, owner, "node %d has a free child (%d)", node,
-                        nodeHeight[c1] < 0 ? c1 : c2);
-                    check(height == 1 + Math.max(nodeHeight[c1], nodeHeight[c2]), owner, "node %d has wrong height %d",
+                    check(height(c1) >= 0 && height(c2) >= 0, owner, "node %d has a free child (%d)", node,
+                        height(c1) < 0 ? c1 : c2);
+                    check(height == 1 + Math.max(height(c1), height(c2)), owner, "node %d has wrong height %d",
                         node, height);
-                    check(nodeMinX[node] == min(nodeMinX[c1], nodeMinX[c2])
-                        && nodeMinY[node] == min(nodeMinY[c1], nodeMinY[c2])
-                        && nodeMaxX[node] == max(nodeMaxX[c1], nodeMaxX[c2])
-                        && nodeMaxY[node] == max(nodeMaxY[c1], nodeMaxY[c2]), owner,
+                    check(minX(node) == min(minX(c1), minX(c2))
+                        && minY(node) == min(minY(c1), minY(c2))
+                        && maxX(node) == max(maxX(c1), maxX(c2))
+                        && maxY(node) == max(maxY(c1), maxY(c2)), owner,
                         "box of node %d is not the union of its children's (height %d)", node, height);
                     push(c1);
                     push(c2);
@@ -482,7 +503,7 @@ final class DynamicTree {
         int free = 0;
         for (int node = freeNodeHead; node != NULL; node = nodeParent[node]) {
             check(node >= 0 && node < nodeHighWater, owner, "free node %d out of range", node, 0);
-            check(nodeHeight[node] == -1, owner, "node %d on the free list has height %d", node, nodeHeight[node]);
+            check(height(node) == -1, owner, "node %d on the free list has height %d", node, height(node));
             free++;
             check(free <= nodeHighWater - nodeCount, owner, "node free list too long at %d", node, free);
         }

@@ -701,8 +701,8 @@ class BroadPhaseTest {
     @Test
     void validateReportsBrokenInvariants() throws ReflectiveOperationException {
         BroadPhase bp = smallTree();
-        // A leaf's box grows without its ancestors being refitted.
-        corruptTree(bp, "nodeMaxX", 0, 1000f);
+        // A leaf's box grows without its ancestors being refitted (node 0's max x: box[4 * 0 + 2]).
+        corruptTree(bp, "box", 2, 1000f);
         IllegalStateException e = assertThrows(IllegalStateException.class, bp::validate);
         assertTrue(e.getMessage().contains("union"), e.getMessage());
 
@@ -710,7 +710,8 @@ class BroadPhaseTest {
         Field rootField = DynamicTree.class.getDeclaredField("root");
         rootField.setAccessible(true);
         int root = (int) rootField.get(dynamicTree(bp));
-        corruptTree(bp, "nodeHeight", root, 99);
+        // The root's height: link[4 * root + 2].
+        corruptTree(bp, "link", 4 * root + 2, 99);
         e = assertThrows(IllegalStateException.class, bp::validate);
         assertTrue(e.getMessage().contains("height"), e.getMessage());
 
