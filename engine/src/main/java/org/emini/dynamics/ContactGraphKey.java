@@ -43,13 +43,22 @@ final class ContactGraphKey {
         return (byte) ((im == 0f ? 1 : 0) | (im != 0f || ii != 0f ? 2 : 0));
     }
 
-    /** Reads this tick's pairs ({@link #first(Contact)}, {@link #second(Contact)} of each contact). */
-    void read(Contact[] all, int contactCount) {
+    /**
+     * Reads this tick's pairs ({@link #first(Contact)}, {@link #second(Contact)} of each contact). A
+     * contact the narrowphase left without points is (−1, −1), without reading it: the colouring
+     * passes over a contact that does not touch, whatever its second body.
+     */
+    void read(Contact[] all, boolean[] noPoints, int contactCount) {
         if (current.length < 2 * contactCount) {
             current = new int[Math.max(2 * contactCount, 2 * current.length)];
         }
         int[] p = current;
         for (int ci = 0; ci < contactCount; ci++) {
+            if (noPoints[ci]) {
+                p[2 * ci] = -1;
+                p[2 * ci + 1] = -1;
+                continue;
+            }
             Contact c = all[ci];
             p[2 * ci] = first(c);
             p[2 * ci + 1] = second(c);

@@ -55,6 +55,13 @@ final class ContactManager implements PairCallback, QueryCallback {
     /** The contacts collided and solved this tick. */
     Contact[] active = new Contact[64];
     int activeCount;
+    // Per active contact: its index in contacts (read without the object; the position itself when
+    // all contacts are active, in order), and whether the narrowphase left it without points (the
+    // colouring then need not read it either).
+    private int[] activeIndex = new int[64];
+    private boolean activeIsAll;
+    boolean[] noPoints = new boolean[64];
+    private final ApartPairs apart = new ApartPairs();
     private long[] keys = new long[64];
     // The segments a body's landscape query found, sorted before their contacts are made.
     private long[] foundSlots = new long[16];
@@ -185,6 +192,8 @@ final class ContactManager implements PairCallback, QueryCallback {
         }
         c.index = count;
         contacts[count++] = c;
+        apart.ensure(count);
+        apart.clear(c.index);
         if (b != null) {
             pairs.add(PairCounts.parts(keyA, keyB));
         }
@@ -269,6 +278,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         Contact last = contacts[--count];
         contacts[i] = last;
         last.index = i;
+        apart.move(count, i);
         contacts[count] = null;
         c.index = -1;
         c.reusable = false;
@@ -298,6 +308,7 @@ final class ContactManager implements PairCallback, QueryCallback {
     void markFilterDirty(Body b) {
         for (Contact k = b.contactList; k != null; k = k.next(b)) {
             k.filterDirty = true;
+            apart.clear(k.index);
         }
     }
 
@@ -389,6 +400,7 @@ final class ContactManager implements PairCallback, QueryCallback {
     void gatherAll() {
         ensureActive(count);
         System.arraycopy(contacts, 0, active, 0, count);
+        activeIsAll = true;
         activeCount = count;
     }
 
@@ -398,6 +410,7 @@ final class ContactManager implements PairCallback, QueryCallback {
      */
     void gather(Body[] bodies, int n, long tick) {
         activeCount = 0;
+        activeIsAll = false;
         gatherMore(bodies, n, tick);
     }
 
@@ -409,6 +422,12 @@ final class ContactManager implements PairCallback, QueryCallback {
      */
     int gatherMore(Body[] bodies, int n, long tick) {
         int from = activeCount;
+        if (activeIsAll) {
+            for (int i = 0; i < from; i++) {
+                activeIndex[i] = i;
+            }
+            activeIsAll = false;
+        }
         int k = 0;
         for (int i = 0; i < n; i++) {
             Body b = bodies[i];
@@ -425,7 +444,9 @@ final class ContactManager implements PairCallback, QueryCallback {
         HeapSort.sort(keys, k);
         ensureActive(from + k);
         for (int i = 0; i < k; i++) {
-            active[from + i] = contacts[(int) keys[i]];
+            int index = (int) keys[i];
+            active[from + i] = contacts[index];
+            activeIndex[from + i] = index;
         }
         activeCount = from + k;
         return from;
@@ -434,6 +455,8 @@ final class ContactManager implements PairCallback, QueryCallback {
     private void ensureActive(int n) {
         if (active.length < n) {
             active = Arrays.copyOf(active, Math.max(n, 2 * active.length));
+            activeIndex = Arrays.copyOf(activeIndex, active.length);
+            noPoints = Arrays.copyOf(noPoints, active.length);
         }
     }
 
@@ -476,6 +499,8 @@ final class ContactManager implements PairCallback, QueryCallback {
                     ? own.collideParts(c, parts, broadPhase, dt, speculative, reuseTolerance) : NarrowPhase.DEAD;
                 if (o != NarrowPhase.DEAD) {
                     o = touch(c, speculative);
+                    apart.note(c);
+                    noPoints[i] = c.pointCount == 0;
                 }
             }
             if (o == NarrowPhase.DEAD) {
@@ -487,6 +512,7 @@ final class ContactManager implements PairCallback, QueryCallback {
             } else if (o == ENDED) {
                 world.stepData.contactEnded(c);
             }
+            noPoints[kept] = noPoints[i];
             active[kept++] = c;
         }
         activeCount = kept;
@@ -504,12 +530,28 @@ final class ContactManager implements PairCallback, QueryCallback {
         float speculative = phaseSpeculative;
         float tolerance = reuseTolerance;
         Contact[] list = active;
+        int[] index = activeIsAll ? null : activeIndex;
         byte[] out = outcome;
+        boolean[] none = noPoints;
+        ApartPairs copies = apart;
         for (int i = from; i < to; i++) {
+            int j = index == null ? i : index[i];
+            if (copies.isValid(j)) {
+                byte o = np.collideApart(copies, j, parts, broadPhase, dt, speculative);
+                if (o != NarrowPhase.UNKNOWN) {
+                    out[i] = o;
+                    none[i] = true;
+                    continue;
+                }
+            }
             Contact c = list[i];
             byte o = c.segmentSlot >= 0 ? np.collideLandscape(c, parts, broadPhase, dt, speculative, tolerance)
                 : np.collideBodies(c, parts, broadPhase, dt, speculative, tolerance);
             out[i] = o == NarrowPhase.ALIVE ? touch(c, speculative) : o;
+            if (o != NarrowPhase.FILTER) {
+                copies.note(c);
+            }
+            none[i] = c.pointCount == 0;
         }
     }
 
@@ -536,6 +578,7 @@ final class ContactManager implements PairCallback, QueryCallback {
             Contact c = active[i];
             active[i] = null;
             if (c.pointCount == 0 || listener.preSolve(c)) {
+                noPoints[kept] = noPoints[i];
                 active[kept++] = c;
             } else {
                 c.setImpulses(0, 0f, 0f, 0f);

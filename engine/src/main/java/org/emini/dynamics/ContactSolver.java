@@ -195,10 +195,10 @@ final class ContactSolver {
      * Builds the constraints of all touching contacts from the poses at the start of the tick.
      * Softness is set per constraint: contacts with a static body use the stiffer setting.
      */
-    void prepare(Contact[] all, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft, float maxCondition,
+    void prepare(Contact[] all, boolean[] noPoints, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft, float maxCondition,
             float impulseStep) {
         ensure(contactCount);
-        colour(all, contactCount, bodies);
+        colour(all, noPoints, contactCount, bodies);
         hotContacts.slotsChanged();
         prepareContacts = all;
         passBodies = bodies;
@@ -428,8 +428,8 @@ final class ContactSolver {
      * layout is deterministic, and a tick whose contact graph is the last one's keeps its colouring
      * ({@link ContactGraphKey}).
      */
-    private void colour(Contact[] all, int contactCount, SolverBodies bodies) {
-        graph.read(all, contactCount);
+    private void colour(Contact[] all, boolean[] noPoints, int contactCount, SolverBodies bodies) {
+        graph.read(all, noPoints, contactCount);
         if (keepColouring && graph.matches(contactCount, bodies)) {
             return;
         }

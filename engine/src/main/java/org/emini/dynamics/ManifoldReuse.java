@@ -197,7 +197,12 @@ final class ManifoldReuse {
      * collider's separations, a few steps of the pair's extent.
      */
     static boolean staysApart(Contact c, Body a, Body b, float radiusA, float radiusB, float margin) {
-        float gap = c.apartGap;
+        return staysApart(c.apartGap, c.poseX, c.poseY, c.poseC, c.poseS, a, b, radiusA, radiusB, margin);
+    }
+
+    /** {@link #staysApart(Contact, Body, Body, float, float, float)} from a copy of the contact's gap and pose. */
+    static boolean staysApart(float gap, float poseX, float poseY, float poseC, float poseS, Body a, Body b, float radiusA,
+            float radiusB, float margin) {
         if (gap == 0f) {
             return false;
         }
@@ -205,11 +210,11 @@ final class ManifoldReuse {
         float py = frameY(a, b);
         float rc = frameC(a, b);
         float rs = frameS(a, b);
-        float turnSin = rs * c.poseC - rc * c.poseS;
-        float turnCos = rc * c.poseC + rs * c.poseS;
+        float turnSin = rs * poseC - rc * poseS;
+        float turnCos = rc * poseC + rs * poseS;
         // A point at distance r from B's origin moves r times the chord of the turn, at most
         // r (|sin| + |1 − cos|); the translation's two components bound its length too.
-        float moved = Math.abs(px - c.poseX) + Math.abs(py - c.poseY) + (Math.abs(turnSin) + Math.abs(1f - turnCos)) * radiusB;
+        float moved = Math.abs(px - poseX) + Math.abs(py - poseY) + (Math.abs(turnSin) + Math.abs(1f - turnCos)) * radiusB;
         float slack = APART_SLACK * (1f + Math.abs(px) + Math.abs(py) + radiusA + radiusB);
         return moved + margin + slack < gap;
     }

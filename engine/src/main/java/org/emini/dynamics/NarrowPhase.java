@@ -20,6 +20,8 @@ final class NarrowPhase {
     static final byte DEAD = 1;
     /** Its filter must be asked again, which only the calling thread does: not collided yet. */
     static final byte FILTER = 2;
+    /** Not decided without reading the contact object: {@link #collideBodies} must. */
+    static final byte UNKNOWN = -1;
 
     private final Collider collider = new Collider();
     private final Manifold manifold = new Manifold();
@@ -58,6 +60,31 @@ final class NarrowPhase {
             ManifoldReuse.rememberApart(c, a, b, collider.getApartGap());
         }
         return ALIVE;
+    }
+
+    /**
+     * A pair left apart and unchanged since ({@link ApartPairs}), decided from its copy as
+     * {@link #collideParts} would decide from the contact: DEAD when the fat boxes no longer overlap,
+     * ALIVE when it stays apart with the same friction and elasticity (nothing to write), else UNKNOWN.
+     */
+    byte collideApart(ApartPairs apart, int index, PartKeys parts, BroadPhase broadPhase, float dt, float speculative) {
+        int keyA = apart.keyA(index);
+        int keyB = apart.keyB(index);
+        if (!broadPhase.testOverlap(parts.proxy(keyA), parts.proxy(keyB))) {
+            return DEAD;
+        }
+        Body a = parts.body(keyA);
+        Body b = parts.body(keyB);
+        float sweep = dt * (sweepSpeed(a) + sweepSpeed(b));
+        Shape sa = a.getShape();
+        Shape sb = b.getShape();
+        Shape pa = ContactManager.part(sa, parts.part(keyA));
+        Shape pb = ContactManager.part(sb, parts.part(keyB));
+        if (apart.staysApart(index, a, b, pa.getBoundingRadius(), pb.getBoundingRadius(), speculative + sweep)
+            && apart.sameFactors(index, sa.getFriction() * sb.getFriction(), sa.getElasticity() * sb.getElasticity())) {
+            return ALIVE;
+        }
+        return UNKNOWN;
     }
 
     /** Collides a contact between a body's part and a landscape segment. */

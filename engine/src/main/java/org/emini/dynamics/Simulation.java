@@ -1287,7 +1287,7 @@ public abstract class Simulation {
         if (preSolve != null) {
             contacts.preSolve(preSolve);
         }
-        Body bad = solver.solve(this, area.bodies, area.count, contacts.active, contacts.activeCount,
+        Body bad = solver.solve(this, area.bodies, area.count, contacts.active, contacts.noPoints, contacts.activeCount,
             constraints.array(), constraints.count(), broadPhase);
         if (bad != null) {
             throw leftFiniteRange(bad, solver.bodies.describe(bad));

@@ -121,12 +121,13 @@ final class Solver {
      * @param world the world, for its settings
      * @param simulated the bodies to move, {@code simulatedCount} of them
      * @param active the contacts the narrowphase updated, {@code activeCount} of them
+     * @param noPoints per active contact, whether the narrowphase left it without points
      * @param constraints the constraints, {@code constraintCount} of them, solved in this order
      * @param broadPhase for the continuous pass
      * @return null, or the first body whose state left the range of finite numbers (when the
      *     continuous pass found it, nothing was written back)
      */
-    Body solve(Simulation world, Body[] simulated, int simulatedCount, Contact[] active, int activeCount,
+    Body solve(Simulation world, Body[] simulated, int simulatedCount, Contact[] active, boolean[] noPoints, int activeCount,
             Constraint[] constraints, int constraintCount, BroadPhase broadPhase) {
         float dt = world.getTimestep();
         int n = world.getConstraintIterations();
@@ -144,7 +145,7 @@ final class Solver {
         }
         solving = true;
         setSoftness(settings, h);
-        contacts.prepare(active, activeCount, sb, soft, staticSoft, settings.getBlockConditionLimit(),
+        contacts.prepare(active, noPoints, activeCount, sb, soft, staticSoft, settings.getBlockConditionLimit(),
             lastSubstep != 0f ? lastSubstep : h);
         int sinkSubsteps = sinkSubsteps(settings, dt, n, contacts.heaviestLoad());
         if (sinkSubsteps > n) {
