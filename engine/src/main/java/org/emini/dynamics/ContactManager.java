@@ -422,12 +422,8 @@ final class ContactManager implements PairCallback, QueryCallback {
      */
     int gatherMore(Body[] bodies, int n, long tick) {
         int from = activeCount;
-        if (activeIsAll) {
-            for (int i = 0; i < from; i++) {
-                activeIndex[i] = i;
-            }
-            activeIsAll = false;
-        }
+        // The narrowphase reads the indices of the appended contacts only: those before were collided.
+        activeIsAll = false;
         int k = 0;
         for (int i = 0; i < n; i++) {
             Body b = bodies[i];
