@@ -1126,9 +1126,9 @@ public abstract class Simulation {
      * integration are not. Parts are at least 64 contacts in the narrowphase, 48 in a colour and 256
      * bodies. An idle thread spins a few tens of microseconds, then parks: between ticks, and within a
      * tick while the calling thread does serial work longer than that (ten 20-row pyramids: twice a
-     * tick). Measured with two threads on a 2-core virtual machine (`./emini bench`, 2026-11-29, after
-     * that day's one-thread gains): ten 20-row pyramids 1.3 to 1.45 times the one-thread speed, rain of
-     * 5,000 to 20,000 bodies 1.35 to 1.5, the tumbler 1.2, when the host left both cores free; in busier
+     * tick). Measured with two threads on a 2-core virtual machine (`./emini bench`, two runs on
+     * 2026-11-29): ten 20-row pyramids 1.3 to 1.45 times the one-thread speed, rain of 5,000 to 20,000
+     * bodies 1.35 to 1.85, the tumbler 1.1 to 1.2, when the host left both cores free; in busier
      * minutes two threads ran at 0.75 to 1.0 times one: try it on the target device. Call with 1 to
      * stop the threads when the world is no longer used.
      *
