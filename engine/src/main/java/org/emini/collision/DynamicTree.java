@@ -8,10 +8,10 @@ import java.util.Arrays;
  * tree is kept balanced by AVL-like rotations on the way back up from every insertion and removal,
  * so its height stays O(log n) even for sorted insertion orders (Box2D's tree, on flat arrays).
  *
- * <p>Nodes live in primitive arrays indexed by node id, a node's box in one span of four floats and its
- * children, height and item in one of four ints; freed nodes are reused, arrays double
- * when full, queries walk an explicit stack kept as a field, so nothing is allocated once the tree
- * has grown to the scene. The shape of the tree, and so the order in which a query reports leaves,
+ * <p>Nodes live in primitive arrays indexed by node id, a node's box in one span of four floats and
+ * its children, height and item in one of four ints; freed nodes are reused, arrays double when full,
+ * queries walk an explicit stack kept as a field, so nothing is allocated once the tree has grown to
+ * the scene. The shape of the tree, and so the order in which a query reports leaves,
  * depends only on the sequence of insertions and removals: the same calls give the same results.
  * A query's callback may query again (each query uses the stack above its caller's entries).
  */

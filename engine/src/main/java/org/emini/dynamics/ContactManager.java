@@ -115,7 +115,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         return s.getType() == Shape.TYPE_MULTI ? ((MultiShape) s).getShape(i) : s;
     }
 
-    /** Two parts' fat boxes began to overlap: a contact for them, unless they have one or may not collide. */
+    /** Two parts' fat boxes began to overlap, and they have no contact ({@link #isKnownPair}): one, unless they may not collide. */
     @Override
     public void addPair(int keyA, int keyB) {
         Body a = parts.body(keyA);
@@ -544,9 +544,7 @@ final class ContactManager implements PairCallback, QueryCallback {
             byte o = c.segmentSlot >= 0 ? np.collideLandscape(c, parts, broadPhase, dt, speculative, tolerance)
                 : np.collideBodies(c, parts, broadPhase, dt, speculative, tolerance);
             out[i] = o == NarrowPhase.ALIVE ? touch(c, speculative) : o;
-            if (o != NarrowPhase.FILTER) {
-                copies.note(c);
-            }
+            copies.note(c);
             none[i] = c.pointCount == 0;
         }
     }

@@ -195,8 +195,8 @@ final class ContactSolver {
      * Builds the constraints of all touching contacts from the poses at the start of the tick.
      * Softness is set per constraint: contacts with a static body use the stiffer setting.
      */
-    void prepare(Contact[] all, boolean[] noPoints, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft, float maxCondition,
-            float impulseStep) {
+    void prepare(Contact[] all, boolean[] noPoints, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft,
+            float maxCondition, float impulseStep) {
         ensure(contactCount);
         colour(all, noPoints, contactCount, bodies);
         hotContacts.slotsChanged();
