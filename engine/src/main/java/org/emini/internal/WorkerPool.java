@@ -2,6 +2,7 @@ package org.emini.internal;
 
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -11,8 +12,14 @@ import java.util.concurrent.locks.LockSupport;
  * before it parks, and {@link #run} allocates nothing. Plain {@code java.util.concurrent}: it runs on
  * Android.
  *
- * <p>The split depends on the range and the thread count only; a task whose parts touch disjoint
- * data gives the same result whatever the count. A task that throws in a worker is rethrown by
+ * <p>The parts are claimed: the calling thread takes the first, the workers take the others, and
+ * once done with its own the calling thread takes whatever is left. A worker that is parked, or
+ * whose core the system gave to another process, therefore never holds the tick up; on a busy
+ * device the caller does all the parts alone.
+ *
+ * <p>The split depends on the range and the thread count only, and a task is told which part it
+ * runs, not which thread runs it: a task whose parts touch disjoint data gives the same result
+ * whatever the count and whichever thread takes a part. A task that throws is rethrown by
  * {@link #run} on the calling thread. {@link #close} stops the threads.
  */
 public final class WorkerPool {
@@ -21,11 +28,13 @@ public final class WorkerPool {
         /**
          * Runs part of the range.
          *
-         * @param worker 0 for the calling thread, 1 to {@code threads − 1} for the workers
+         * @param part the part's index, 0 to the thread count − 1 (0: the first part, which the
+         *     calling thread runs); in one {@link #run} each index runs once, on one thread, so a task
+         *     may keep scratch space per index
          * @param from first index
          * @param to one past the last index
          */
-        void run(int worker, int from, int to);
+        void run(int part, int from, int to);
     }
 
     /** Spins of an idle worker before it parks: about a few tens of microseconds. */
@@ -33,15 +42,21 @@ public final class WorkerPool {
 
     private final Worker[] workers;
     private final int threads;
-    private final AtomicInteger pending = new AtomicInteger();
-    /** Incremented once per {@link #run}; the volatile write publishes the job's fields below. */
-    private volatile int epoch;
+    /**
+     * The job's number (high 32 bits), its part count (16 bits) and its next unclaimed part (low 16
+     * bits). A claim is a compare-and-set from the value read before the job's fields, so a worker that
+     * read the fields of a job already finished (and perhaps half-overwritten by the next) fails its
+     * claim instead of running them: while a part is unclaimed, the job is not done and its fields stay.
+     */
+    private final AtomicLong claim = new AtomicLong();
+    /** Parts of the current job finished. */
+    private final AtomicInteger done = new AtomicInteger();
     private volatile boolean stopping;
     private volatile Throwable failure;
+    private int jobs;
     private RangeTask task;
     private int begin;
     private int end;
-    private int parts;
 
     /**
      * Starts {@code threads − 1} worker threads.
@@ -56,7 +71,7 @@ public final class WorkerPool {
         this.threads = threads;
         workers = new Worker[threads - 1];
         for (int i = 0; i < workers.length; i++) {
-            workers[i] = new Worker(i + 1);
+            workers[i] = new Worker();
             Thread t = factory != null ? factory.newThread(workers[i]) : new Thread(workers[i], "emini-worker-" + (i + 1));
             if (factory == null) {
                 t.setDaemon(true);
@@ -96,27 +111,28 @@ public final class WorkerPool {
         task = t;
         begin = from;
         end = to;
-        parts = p;
-        // Every worker acknowledges every job, those without a part too: the next job's fields are
-        // written only once no worker can still be reading this one's.
-        pending.set(workers.length);
-        epoch++;
+        done.set(0);
+        // Part 0 is the caller's from the start.
+        claim.set((long) ++jobs << 32 | p << 16 | 1);
         for (Worker w : workers) {
             if (w.parked) {
                 LockSupport.unpark(w.thread);
             }
         }
-        try {
-            t.run(0, from, partEnd(from, n, p, 0));
-        } finally {
-            int spins = 0;
-            while (pending.get() != 0) {
-                if (++spins > SPINS_BEFORE_PARK) {
-                    Thread.yield();
-                }
+        runPart(t, 0, from, n, p);
+        long c;
+        while (nextPart(c = claim.get()) < p) {
+            if (claim.compareAndSet(c, c + 1L)) {
+                runPart(t, nextPart(c), from, n, p);
             }
-            task = null;
         }
+        int spins = 0;
+        while (done.get() != p) {
+            if (++spins > SPINS_BEFORE_PARK) {
+                Thread.yield();
+            }
+        }
+        task = null;
         Throwable f = failure;
         if (f != null) {
             failure = null;
@@ -128,6 +144,24 @@ public final class WorkerPool {
             }
             throw new IllegalStateException("WorkerPool: a worker failed", f);
         }
+    }
+
+    /** Runs one part, keeps its failure for {@link #run} to rethrow, and counts it done. */
+    private void runPart(RangeTask t, int part, int from, int n, int p) {
+        try {
+            t.run(part, partEnd(from, n, p, part - 1), partEnd(from, n, p, part));
+        } catch (Throwable e) {
+            failure = e;
+        }
+        done.incrementAndGet();
+    }
+
+    private static int nextPart(long claimed) {
+        return (int) claimed & 0xFFFF;
+    }
+
+    private static int partCount(long claimed) {
+        return ((int) claimed >>> 16) & 0xFFFF;
     }
 
     private static int partEnd(int from, int n, int p, int part) {
@@ -143,46 +177,42 @@ public final class WorkerPool {
     }
 
     private final class Worker implements Runnable {
-        final int index;
         Thread thread;
         volatile boolean parked;
-
-        Worker(int index) {
-            this.index = index;
-        }
 
         @Override
         public void run() {
             int seen = 0;
             while (true) {
-                int e;
+                long c;
                 int spins = 0;
-                while ((e = epoch) == seen) {
+                while ((int) ((c = claim.get()) >>> 32) == seen) {
                     if (stopping) {
                         return;
                     }
                     if (++spins > SPINS_BEFORE_PARK) {
                         parked = true;
-                        // Re-read after announcing: run() reads parked after writing epoch, so one of
-                        // the two sees the other's write.
-                        if (epoch == seen && !stopping) {
+                        // Re-read after announcing: run() reads parked after publishing a job, so one
+                        // of the two sees the other's write.
+                        if ((int) (claim.get() >>> 32) == seen && !stopping) {
                             LockSupport.park(this);
                         }
                         parked = false;
                         spins = 0;
                     }
                 }
-                seen = e;
-                int p = parts;
-                if (index < p) {
-                    int n = end - begin;
-                    try {
-                        task.run(index, partEnd(begin, n, p, index - 1), partEnd(begin, n, p, index));
-                    } catch (Throwable t) {
-                        failure = t;
+                int job = (int) (c >>> 32);
+                seen = job;
+                int p = partCount(c);
+                while (nextPart(c) < p && (int) (c >>> 32) == job) {
+                    RangeTask t = task;
+                    int from = begin;
+                    int n = end - from;
+                    if (claim.compareAndSet(c, c + 1L)) {
+                        runPart(t, nextPart(c), from, n, p);
                     }
+                    c = claim.get();
                 }
-                pending.decrementAndGet();
             }
         }
     }
