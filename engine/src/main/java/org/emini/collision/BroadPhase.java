@@ -249,26 +249,34 @@ public final class BroadPhase {
         BoxChecks.box("moveProxy", minX, minY, maxX, maxY);
         BoxChecks.finite("moveProxy", "dx", dx);
         BoxChecks.finite("moveProxy", "dy", dy);
-        int leaf = proxies.node[proxyId];
-        DynamicTree tree = trees[proxies.tree[proxyId]];
-
-        float fatMinX = minX - margin;
-        float fatMinY = minY - margin;
-        float fatMaxX = maxX + margin;
-        float fatMaxY = maxY + margin;
+        if (keepsBox(proxyId, minX, minY, maxX, maxY, dx, dy)) {
+            return false;
+        }
         float ex = DISPLACEMENT_MULTIPLIER * dx;
         float ey = DISPLACEMENT_MULTIPLIER * dy;
-        if (ex < 0f) {
-            fatMinX += ex;
-        } else {
-            fatMaxX += ex;
-        }
-        if (ey < 0f) {
-            fatMinY += ey;
-        } else {
-            fatMaxY += ey;
-        }
+        trees[proxies.tree[proxyId]].move(proxies.node[proxyId], fatLow(minX, ex), fatLow(minY, ey), fatHigh(maxX, ex),
+            fatHigh(maxY, ey));
+        moved.add(proxyId);
+        return true;
+    }
 
+    /**
+     * Whether {@link #moveProxy} with these arguments would leave the proxy where it is (and return
+     * false). It only reads, so threads may ask it about different proxies at once while nothing
+     * changes the broadphase; it checks nothing: the arguments must be valid for moveProxy.
+     *
+     * @param proxyId a live proxy id
+     * @param minX the left of the new tight AABB
+     * @param minY the top of the new tight AABB
+     * @param maxX the right of the new tight AABB, at least minX
+     * @param maxY the bottom of the new tight AABB, at least minY
+     * @param dx the expected x displacement of the shape during the next step (px)
+     * @param dy the expected y displacement of the shape during the next step (px)
+     * @return true if the proxy's fat AABB holds the swept tight one and is not oversized
+     */
+    public boolean keepsBox(int proxyId, float minX, float minY, float maxX, float maxY, float dx, float dy) {
+        int leaf = proxies.node[proxyId];
+        DynamicTree tree = trees[proxies.tree[proxyId]];
         float oldMinX = tree.minX(leaf);
         float oldMinY = tree.minY(leaf);
         float oldMaxX = tree.maxX(leaf);
@@ -279,20 +287,35 @@ public final class BroadPhase {
         float sweptMinY = dy < 0f ? minY + dy : minY;
         float sweptMaxX = dx > 0f ? maxX + dx : maxX;
         float sweptMaxY = dy > 0f ? maxY + dy : maxY;
-        if (oldMinX <= sweptMinX && oldMinY <= sweptMinY && sweptMaxX <= oldMaxX && sweptMaxY <= oldMaxY) {
-            // The stretch is added to the slack so that a steadily moving shape, whose old box
-            // trails behind, is re-inserted only when it leaves its box.
-            float slackX = SHRINK_MARGINS * margin + Math.abs(ex);
-            float slackY = SHRINK_MARGINS * margin + Math.abs(ey);
-            if (fatMinX - slackX <= oldMinX && fatMinY - slackY <= oldMinY
-                    && oldMaxX <= fatMaxX + slackX && oldMaxY <= fatMaxY + slackY) {
-                return false;
-            }
+        if (!(oldMinX <= sweptMinX && oldMinY <= sweptMinY && sweptMaxX <= oldMaxX && sweptMaxY <= oldMaxY)) {
+            return false;
         }
+        // The old box must not be oversized either. The stretch is added to the slack so that a
+        // steadily moving shape, whose old box trails behind, is re-inserted only when it leaves its box.
+        float ex = DISPLACEMENT_MULTIPLIER * dx;
+        float ey = DISPLACEMENT_MULTIPLIER * dy;
+        float slackX = SHRINK_MARGINS * margin + Math.abs(ex);
+        float slackY = SHRINK_MARGINS * margin + Math.abs(ey);
+        return fatLow(minX, ex) - slackX <= oldMinX && fatLow(minY, ey) - slackY <= oldMinY
+            && oldMaxX <= fatHigh(maxX, ex) + slackX && oldMaxY <= fatHigh(maxY, ey) + slackY;
+    }
 
-        tree.move(leaf, fatMinX, fatMinY, fatMaxX, fatMaxY);
-        moved.add(proxyId);
-        return true;
+    /** A fat box's low side: the margin, and the stretch when it points that way. */
+    private float fatLow(float min, float stretch) {
+        float low = min - margin;
+        if (stretch < 0f) {
+            low += stretch;
+        }
+        return low;
+    }
+
+    /** A fat box's high side: the margin, and the stretch when it points that way. */
+    private float fatHigh(float max, float stretch) {
+        float high = max + margin;
+        if (stretch >= 0f) {
+            high += stretch;
+        }
+        return high;
     }
 
     /**

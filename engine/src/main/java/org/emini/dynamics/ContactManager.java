@@ -346,9 +346,14 @@ final class ContactManager implements PairCallback, QueryCallback {
      * having looked from now on.
      */
     boolean landscapeStale(Body b) {
-        boolean stale = b.landscapeEpoch != landscapeEpoch;
+        boolean stale = isLandscapeStale(b);
         b.landscapeEpoch = landscapeEpoch;
         return stale;
+    }
+
+    /** {@link #landscapeStale} without counting as a look: it only reads. */
+    boolean isLandscapeStale(Body b) {
+        return b.landscapeEpoch != landscapeEpoch;
     }
 
     /**

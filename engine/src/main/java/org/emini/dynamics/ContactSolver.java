@@ -132,11 +132,13 @@ final class ContactSolver {
 
     /**
      * The fewest contacts of a colour worth a thread of their own. A contact costs about 40 ns a pass
-     * and a split about a microsecond or two, so 48 contacts (about 2 µs) pay for it. The level
-     * colouring makes many colours of 100 to 250 contacts (ten 20-row pyramids): at 128 most ran on
-     * one thread, and two threads gave 1.13 times the speed of one; at 48, 1.3 to 1.4.
+     * and a split, while the other thread spins, under a microsecond, so 32 contacts pay for it. The
+     * level colouring makes many colours of 100 to 250 contacts and a few small top ones (ten 20-row
+     * pyramids): at 128 most ran on one thread, and two threads gave 1.13 times the speed of one; at
+     * 48, 1.3 to 1.4, with the seven colours under 96 contacts (7% of them, 140 µs a tick) on one
+     * thread; at 32, 3% faster than at 48 (16: no faster).
      */
-    static final int MIN_PART = 48;
+    static final int MIN_PART = 32;
     /** Per-worker results sit this many elements apart, so that workers do not share a cache line. */
     private static final int PAD = 16;
     private WorkerPool pool;
@@ -174,6 +176,12 @@ final class ContactSolver {
         @Override
         public void run(int worker, int from, int to) {
             warmRange(from, to);
+        }
+    };
+    private final WorkerPool.RangeTask storeTask = new WorkerPool.RangeTask() {
+        @Override
+        public void run(int worker, int from, int to) {
+            storeRange(from, to);
         }
     };
 
@@ -1142,24 +1150,41 @@ final class ContactSolver {
      * faster than the threshold (infinite: no hits, no cost).
      */
     void storeImpulses(StepData step, float hitSpeed) {
-        boolean hits = hitSpeed < Float.POSITIVE_INFINITY;
-        for (int k = 0; k < count; k++) {
+        if (hitSpeed < Float.POSITIVE_INFINITY) {
+            for (int k = 0; k < count; k++) {
+                int fo = k * CS;
+                int pc = n[k * CI + POINTS];
+                float fastest = hitSpeed;
+                int hitPoint = -1;
+                for (int p = 0; p < pc; p++) {
+                    int po = fo + P0 + p * PS;
+                    // The relative velocity along the normal is negative while the bodies approach.
+                    if (f[po + MAXIMP] > 0f && -f[po + RELVEL] > fastest) {
+                        fastest = -f[po + RELVEL];
+                        hitPoint = p;
+                    }
+                }
+                if (hitPoint >= 0) {
+                    step.contactHit(contacts[k], hitPoint, fastest);
+                }
+            }
+        }
+        if (pool != null) {
+            pool.run(storeTask, 0, count, minPart);
+        } else {
+            storeRange(0, count);
+        }
+    }
+
+    /** Copies the impulses of slots [from, to) to their contacts (each slot its own contact). */
+    private void storeRange(int from, int to) {
+        for (int k = from; k < to; k++) {
             Contact c = contacts[k];
             int fo = k * CS;
             int pc = n[k * CI + POINTS];
-            float fastest = hitSpeed;
-            int hitPoint = -1;
             for (int p = 0; p < pc; p++) {
                 int po = fo + P0 + p * PS;
                 c.setImpulses(p, f[po + NIMP], f[po + TIMP], f[po + MAXIMP]);
-                // The relative velocity along the normal is negative while the bodies approach.
-                if (hits && f[po + MAXIMP] > 0f && -f[po + RELVEL] > fastest) {
-                    fastest = -f[po + RELVEL];
-                    hitPoint = p;
-                }
-            }
-            if (hitPoint >= 0) {
-                step.contactHit(c, hitPoint, fastest);
             }
             contacts[k] = null;
         }

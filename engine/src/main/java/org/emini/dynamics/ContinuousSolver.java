@@ -65,14 +65,49 @@ final class ContinuousSolver implements QueryCallback {
     private int metCount;
 
     private final LandscapeSweep segments = new LandscapeSweep();
+    // Per slot, what mark() found: nothing to do, a sweep, or a state outside the finite range.
+    private static final byte STILL = 0;
+    private static final byte FAST = 1;
+    private static final byte NOT_FINITE = 2;
+    private byte[] marks = new byte[8];
 
     ContinuousSolver(Simulation world) {
         this.world = world;
     }
 
+    /** Makes room for a mark per slot of the coming solve; before {@link #mark}. */
+    void begin(int slotCount) {
+        if (marks.length < slotCount) {
+            marks = new byte[Math.max(slotCount, 2 * marks.length)];
+        }
+    }
+
     /**
-     * Moves each fast body back to its first time of impact with a static body (a bullet: any body)
-     * or the landscape.
+     * Marks which of slots [from, to) moved far enough in the tick to be swept, and which left the
+     * finite range. Each slot is its own and a sweep changes only its own slot's pose, so ranges
+     * may run on different threads, before {@link #solve}.
+     */
+    void mark(SolverBodies sb, int from, int to) {
+        float[] st = sb.state;
+        byte[] m = marks;
+        for (int i = from, o = from * STRIDE; i < to; i++, o += STRIDE) {
+            Body b = sb.bodies[i];
+            Shape shape = sb.shapes[i];
+            float da = st[o + ANGLE] - b.angle;
+            float travel = Math.abs(st[o + DPX]) + Math.abs(st[o + DPY]) + Math.abs(da) * shape.getBoundingRadius();
+            if (!EMath.isFinite(travel + st[o + X] + st[o + Y] + st[o + VX] + st[o + VY] + st[o + W])) {
+                m[i] = NOT_FINITE;
+            } else if (b.isKinematic() || travel <= 2f * TimeOfImpact.coreRadius(shape)) {
+                m[i] = STILL;
+            } else {
+                m[i] = FAST;
+            }
+        }
+    }
+
+    /**
+     * Moves each fast body ({@link #mark}) back to its first time of impact with a static body (a
+     * bullet: any body) or the landscape, in slot order.
      *
      * @return null, or the first body whose new state is not finite or whose swept box overflows
      *     (nothing can be swept for it; the tick stops with an error naming it)
@@ -81,19 +116,19 @@ final class ContinuousSolver implements QueryCallback {
         this.target = target;
         float[] st = sb.state;
         state = st;
+        byte[] m = marks;
         for (int i = 1, o = STRIDE; i < sb.count; i++, o += STRIDE) {
+            if (m[i] == STILL) {
+                continue;
+            }
             Body b = sb.bodies[i];
-            Shape shape = b.getShape();
+            if (m[i] == NOT_FINITE) {
+                return escaped(b);
+            }
+            Shape shape = sb.shapes[i];
             float dx = st[o + DPX];
             float dy = st[o + DPY];
             float da = st[o + ANGLE] - b.angle;
-            float travel = Math.abs(dx) + Math.abs(dy) + Math.abs(da) * shape.getBoundingRadius();
-            if (!EMath.isFinite(travel + st[o + X] + st[o + Y] + st[o + VX] + st[o + VY] + st[o + W])) {
-                return escaped(b);
-            }
-            if (b.isKinematic() || travel <= 2f * TimeOfImpact.coreRadius(shape)) {
-                continue;
-            }
             moving = b;
             x1 = st[o + X];
             y1 = st[o + Y];

@@ -1,6 +1,7 @@
 package org.emini.dynamics;
 
 import org.emini.collision.BroadPhase;
+import org.emini.internal.WorkerPool;
 import org.emini.math.EMath;
 import org.emini.shape.Shape;
 
@@ -21,12 +22,41 @@ final class ProxySync {
     // Bodies whose pose or shape the application changed since the last tick.
     Body[] dirty = new Body[16];
     int dirtyCount;
+    /** Per simulated body, whether its proxy stays as it is this tick ({@link #markStaying}). */
+    private boolean[] staying = new boolean[8];
+    private WorkerPool pool;
+    private int minBodies = Solver.MIN_BODIES;
+    // What markTask reads, and a box per worker.
+    private Body[] markList;
+    private float markDt;
+    private float[][] workerBox = {box};
+    private final WorkerPool.RangeTask markTask = new WorkerPool.RangeTask() {
+        @Override
+        public void run(int worker, int from, int to) {
+            markStaying(markList, from, to, markDt, workerBox[worker]);
+        }
+    };
 
     ProxySync(Simulation world, BroadPhase broadPhase, ContactManager contacts, PartKeys keys) {
         this.world = world;
         this.broadPhase = broadPhase;
         this.contacts = contacts;
         this.keys = keys;
+    }
+
+    /** Shares the look at the simulated bodies with a pool's threads, or not (null). */
+    void setPool(WorkerPool pool) {
+        this.pool = pool;
+        workerBox = new float[pool == null ? 1 : pool.getThreadCount()][];
+        workerBox[0] = box;
+        for (int w = 1; w < workerBox.length; w++) {
+            workerBox[w] = new float[4];
+        }
+    }
+
+    /** The fewest bodies given to a thread (tests split every range with 1). */
+    void setMinParallelPart(int bodies) {
+        minBodies = bodies;
     }
 
     /** Gives each part of the body's shape a key and a proxy, in part order. */
@@ -122,7 +152,21 @@ final class ProxySync {
             ContactManager.forgetLandscape(b);
         }
         dirtyCount = 0;
+        if (staying.length < simulatedCount) {
+            staying = new boolean[Math.max(simulatedCount, 2 * staying.length)];
+        }
+        markList = simulated;
+        markDt = dt;
+        if (pool != null) {
+            pool.run(markTask, 0, simulatedCount, minBodies);
+        } else {
+            markStaying(simulated, 0, simulatedCount, dt, box);
+        }
+        markList = null;
         for (int i = 0; i < simulatedCount; i++) {
+            if (staying[i]) {
+                continue;
+            }
             Body b = simulated[i];
             b.proxyDirty = false;
             boolean lookAgain = contacts.landscapeStale(b);
@@ -148,6 +192,28 @@ final class ProxySync {
             }
         }
         return null;
+    }
+
+    /**
+     * Marks the bodies [from, to) of the simulated list for which the loop in {@link #update} would
+     * change nothing: one part, not moved by the application, landscape look not stale, a finite box
+     * whose proxy stays. It only reads, so ranges may run on different threads (each with its own box).
+     */
+    private void markStaying(Body[] simulated, int from, int to, float dt, float[] box) {
+        boolean[] marks = staying;
+        for (int i = from; i < to; i++) {
+            Body b = simulated[i];
+            int[] partKeys = b.partKeys;
+            boolean stays = false;
+            if (partKeys.length == 1 && !b.proxyDirty && !contacts.isLandscapeStale(b)) {
+                b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
+                float dx = b.vx * dt;
+                float dy = b.vy * dt;
+                stays = EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])
+                    && broadPhase.keepsBox(keys.proxy(partKeys[0]), box[0], box[1], box[2], box[3], dx, dy);
+            }
+            marks[i] = stays;
+        }
     }
 
     /** Moves one part's proxy and finds its landscape contacts; false when its box or displacement is not finite. */

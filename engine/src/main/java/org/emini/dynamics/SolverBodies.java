@@ -52,9 +52,9 @@ final class SolverBodies {
     // The kinematic bodies among them: the fast-body sweep then looks at moving bodies too.
     int kinematicCount;
 
-    /** Starts a tick: only the static slot remains. */
-    void reset(int capacity) {
-        int need = capacity + 1;
+    /** Starts a tick with slots 1 to {@code bodyCount} for the bodies that {@link #copyIn} copies. */
+    void reset(int bodyCount) {
+        int need = bodyCount + 1;
         if (bodies.length < need) {
             int n = Math.max(need, bodies.length * 2);
             bodies = new Body[n];
@@ -76,31 +76,42 @@ final class SolverBodies {
         st[C] = 1f;
         alpha[0] = 0f;
         bodies[0] = null;
-        count = 1;
+        count = need;
         kinematicCount = 0;
     }
 
-    /** Copies a dynamic or kinematic body in, with the forces applied for this tick; returns its slot. */
-    int add(Body b, float gravityX, float gravityY, long tick) {
-        int slot = count++;
-        bodies[slot] = b;
-        shapes[slot] = b.getShape();
-        if (b.isKinematic()) {
-            kinematicCount++;
-        }
+    /**
+     * Copies the dynamic or kinematic bodies [from, to) of a list in, with the forces applied for this
+     * tick: body i to slot i + 1, which becomes its solver index. Each body writes its own slot, so
+     * ranges may run on different threads.
+     *
+     * @return how many of them are kinematic
+     */
+    int copyIn(Body[] list, int from, int to, float gravityX, float gravityY, long tick) {
         float[] st = state;
-        int o = slot * STRIDE;
-        copyMotion(b, slot, gravityX, gravityY, tick);
-        st[o + DPX] = 0f;
-        st[o + DPY] = 0f;
-        st[o + DQC] = 1f;
-        st[o + DQS] = 0f;
-        st[o + X] = b.x;
-        st[o + Y] = b.y;
-        st[o + C] = b.c;
-        st[o + S] = b.s;
-        st[o + ANGLE] = b.angle;
-        return slot;
+        int kinematic = 0;
+        for (int i = from; i < to; i++) {
+            Body b = list[i];
+            int slot = i + 1;
+            bodies[slot] = b;
+            shapes[slot] = b.getShape();
+            if (b.isKinematic()) {
+                kinematic++;
+            }
+            int o = slot * STRIDE;
+            copyMotion(b, slot, gravityX, gravityY, tick);
+            st[o + DPX] = 0f;
+            st[o + DPY] = 0f;
+            st[o + DQC] = 1f;
+            st[o + DQS] = 0f;
+            st[o + X] = b.x;
+            st[o + Y] = b.y;
+            st[o + C] = b.c;
+            st[o + S] = b.s;
+            st[o + ANGLE] = b.angle;
+            b.solverIndex = slot;
+        }
+        return kinematic;
     }
 
     /**
@@ -237,14 +248,16 @@ final class SolverBodies {
     }
 
     /**
-     * Copies the state back to the bodies, applies the world's per-tick damping (not to kinematic
-     * bodies, which keep the velocity set) and clears the forces. Returns the first body that
-     * became non-finite, or null.
+     * Copies the state of slots [from, to) back to their bodies, applies the world's per-tick damping
+     * (not to kinematic bodies, which keep the velocity set) and clears the forces. Each slot writes
+     * its own body, so ranges may run on different threads.
+     *
+     * @return the first of these slots whose body became non-finite, or 0 (the static slot) for none
      */
-    Body writeBack(float linearDamped, float angularDamped) {
+    int writeBack(float linearDamped, float angularDamped, int from, int to) {
         float[] st = state;
-        Body bad = null;
-        for (int i = 1, o = STRIDE; i < count; i++, o += STRIDE) {
+        int bad = 0;
+        for (int i = from, o = from * STRIDE; i < to; i++, o += STRIDE) {
             Body b = bodies[i];
             boolean kinematic = b.isKinematic();
             float linearKeep = kinematic ? 1f : linearDamped;
@@ -260,8 +273,8 @@ final class SolverBodies {
             b.forceX = 0f;
             b.forceY = 0f;
             b.torque = 0f;
-            if (bad == null && !(EMath.isFinite(b.x + b.y + b.vx + b.vy + b.w + b.c + b.s))) {
-                bad = b;
+            if (bad == 0 && !(EMath.isFinite(b.x + b.y + b.vx + b.vy + b.w + b.c + b.s))) {
+                bad = i;
             }
             bodies[i] = null;
             shapes[i] = null;

@@ -177,6 +177,67 @@ class WorkerCountTest {
         assertEquals(0, asked[1], "asked on a worker thread");
     }
 
+    /**
+     * Forty boxes falling apart from one another, two of them (the 10th and the 31st) given the same
+     * extreme value; the tick's error (or none) and every body's state after it.
+     */
+    private static String leaving(int workers, java.util.function.BiConsumer<Body, Float> change, float value) {
+        World world = threaded(workers);
+        try {
+            Scenes.ground(world, 0f, 4000f);
+            Body[] boxes = new Body[40];
+            for (int i = 0; i < boxes.length; i++) {
+                boxes[i] = new Body(-1500f + 75f * i, -300f - 10f * (i % 7), Shape.createRectangle(20f, 20f), true);
+                world.addBody(boxes[i]);
+            }
+            String error = "none";
+            for (int t = 0; t < 3; t++) {
+                if (t == 1) {
+                    change.accept(boxes[9], value);
+                    change.accept(boxes[30], value);
+                }
+                try {
+                    world.tick();
+                } catch (IllegalStateException e) {
+                    error = e.getMessage();
+                    // Both left it in the same tick: the error names the first in the world's order.
+                    assertTrue(error.startsWith("World.tick: Body#" + boxes[9].getId() + " "), error);
+                    break;
+                }
+            }
+            return error + " / " + EverythingScene.bodyHash(world);
+        } finally {
+            world.setWorkerCount(1);
+        }
+    }
+
+    @Test
+    void theFirstBodyToLeaveTheFiniteRangeIsNamedForAnyThreadCount() {
+        // The per-body loops that look for a body outside the finite range (the proxies' update, the
+        // fast-body marks, the write-back's backstop) are split among the threads; the error names the
+        // first. The marks find these; with them disabled by hand, the write-back named the same body.
+        java.util.List<java.util.function.BiConsumer<Body, Float>> changes = java.util.Arrays.asList(
+            (b, v) -> b.setVelocity(v, v),
+            (b, v) -> b.applyForce(v, -v),
+            (b, v) -> b.setAngularVelocity(v),
+            (b, v) -> {
+                b.setPosition(v, v);
+                b.setVelocity(-v, -v);
+            });
+        int errors = 0;
+        for (float v : new float[] {1e30f, 3.4e38f, Float.MAX_VALUE}) {
+            for (int c = 0; c < changes.size(); c++) {
+                String one = leaving(1, changes.get(c), v);
+                assertEquals(one, leaving(2, changes.get(c), v), "change " + c + ", value " + v + ", 2 threads");
+                assertEquals(one, leaving(3, changes.get(c), v), "change " + c + ", value " + v + ", 3 threads");
+                if (!one.startsWith("none")) {
+                    errors++;
+                }
+            }
+        }
+        assertTrue(errors >= 4, "errors: " + errors);
+    }
+
     @Test
     void theCountIsCheckedAndReadBack() {
         World world = new World();
