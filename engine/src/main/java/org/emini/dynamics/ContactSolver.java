@@ -139,7 +139,7 @@ final class ContactSolver {
      * thread; at 32, 3% faster than at 48 (16: no faster).
      */
     static final int MIN_PART = 32;
-    /** Per-worker results sit this many elements apart, so that workers do not share a cache line. */
+    /** Per-part results sit this many elements apart, so that threads do not share a cache line. */
     private static final int PAD = 16;
     private WorkerPool pool;
     /** The fewest contacts given to a thread (MIN_PART; tests lower it to split every colour). */

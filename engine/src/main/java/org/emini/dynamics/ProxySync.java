@@ -26,14 +26,14 @@ final class ProxySync {
     private boolean[] staying = new boolean[8];
     private WorkerPool pool;
     private int minBodies = Solver.MIN_BODIES;
-    // What markTask reads, and a box per worker.
+    // What markTask reads, and a box per part.
     private Body[] markList;
     private float markDt;
-    private float[][] workerBox = {box};
+    private float[][] partBox = {box};
     private final WorkerPool.RangeTask markTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
-            markStaying(markList, from, to, markDt, workerBox[worker]);
+        public void run(int part, int from, int to) {
+            markStaying(markList, from, to, markDt, partBox[part]);
         }
     };
 
@@ -47,10 +47,10 @@ final class ProxySync {
     /** Shares the look at the simulated bodies with a pool's threads, or not (null). */
     void setPool(WorkerPool pool) {
         this.pool = pool;
-        workerBox = new float[pool == null ? 1 : pool.getThreadCount()][];
-        workerBox[0] = box;
-        for (int w = 1; w < workerBox.length; w++) {
-            workerBox[w] = new float[4];
+        partBox = new float[pool == null ? 1 : pool.getThreadCount()][];
+        partBox[0] = box;
+        for (int w = 1; w < partBox.length; w++) {
+            partBox[w] = new float[4];
         }
     }
 

@@ -1121,14 +1121,15 @@ public abstract class Simulation {
      * Shares each tick's contact solve with worker threads (1, the default, for none). The contacts
      * are solved colour by colour, so that the contacts of one colour share no moving body, and a
      * colour is split among the threads: the results are bit for bit those of one thread, for any
-     * count. The narrowphase, the contacts' preparation and the per-body loops are shared too (the
+     * count. The narrowphase, the contacts' preparation and most per-body loops are shared too (the
      * threads set each contact's touching flag; the calling thread then destroys contacts and reports
      * touches, in the contacts' order; they mark the bodies whose broadphase boxes stay and those fast
      * enough to sweep, and the calling thread moves and sweeps those in order); the joints, the
-     * colouring and the broadphase's changes are not. Parts are at least 64 contacts in the
-     * narrowphase, 32 in a colour and 256 bodies. An idle thread spins a few tens of microseconds,
-     * then parks: between ticks, and within a tick while the calling thread does serial work longer
-     * than that (ten 20-row pyramids: twice a tick). Measured with two threads on a 2-core virtual machine (`./emini bench`, two runs on
+     * colouring, the velocity integration and the broadphase's changes are not. Parts are at least 64 contacts in the
+     * narrowphase, 32 in a colour and 256 bodies. An idle thread spins about 80 µs, then parks:
+     * between ticks, and within a tick while the calling thread does serial work longer than that.
+     * The calling thread takes the parts no worker has taken once done with its own, so a parked
+     * worker, or one the system does not schedule, never holds a tick up. Measured with two threads on a 2-core virtual machine (`./emini bench`, two runs on
      * 2026-11-29): ten 20-row pyramids 1.3 to 1.45 times the one-thread speed, rain of 5,000 to 20,000
      * bodies 1.35 to 1.85, the tumbler 1.1 to 1.2, when the host left both cores free; in busier
      * minutes two threads ran at 0.75 to 1.0 times one: try it on the target device. Call with 1 to

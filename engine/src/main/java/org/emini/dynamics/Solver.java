@@ -34,11 +34,11 @@ final class Solver {
     private final Simulation world;
     /** The fewest bodies worth a thread in the per-body loops (each body takes a few nanoseconds). */
     static final int MIN_BODIES = 256;
-    /** Per-worker results sit this many ints apart, so that workers do not share a cache line. */
+    /** Per-part results sit this many ints apart, so that threads do not share a cache line. */
     private static final int PAD = 16;
     private WorkerPool pool;
     private int minBodies = MIN_BODIES;
-    // What the per-body tasks below read: the tick's inputs, and per worker what its part found.
+    // What the per-body tasks below read: the tick's inputs, and what each part found.
     private Body[] copyList;
     private float copyGravityX;
     private float copyGravityY;
@@ -46,29 +46,29 @@ final class Solver {
     private float substep;
     private float linearKeep;
     private float angularKeep;
-    private int[] workerFound = new int[PAD];
+    private int[] partFound = new int[PAD];
     private final WorkerPool.RangeTask copyInTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
-            workerFound[worker * PAD] = bodies.copyIn(copyList, from, to, copyGravityX, copyGravityY, copyTick);
+        public void run(int part, int from, int to) {
+            partFound[part * PAD] = bodies.copyIn(copyList, from, to, copyGravityX, copyGravityY, copyTick);
         }
     };
     private final WorkerPool.RangeTask integrateTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
+        public void run(int part, int from, int to) {
             bodies.integratePositions(substep, from, to);
         }
     };
     private final WorkerPool.RangeTask markTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
+        public void run(int part, int from, int to) {
             continuous.mark(bodies, from, to);
         }
     };
     private final WorkerPool.RangeTask writeBackTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
-            workerFound[worker * PAD] = bodies.writeBack(linearKeep, angularKeep, from, to);
+        public void run(int part, int from, int to) {
+            partFound[part * PAD] = bodies.writeBack(linearKeep, angularKeep, from, to);
         }
     };
 
@@ -82,7 +82,7 @@ final class Solver {
     void setPool(WorkerPool pool) {
         this.pool = pool;
         contacts.setPool(pool);
-        workerFound = new int[(pool == null ? 1 : pool.getThreadCount()) * PAD];
+        partFound = new int[(pool == null ? 1 : pool.getThreadCount()) * PAD];
     }
 
     /** The fewest contacts of a colour (and bodies) given to a thread (tests split every colour with 1). */
@@ -93,12 +93,12 @@ final class Solver {
 
     /**
      * Runs a per-body task over [from, to), shared with the pool's threads when there is one, and
-     * returns how many parts it made (their results are in workerFound).
+     * returns how many parts it made (their results are in partFound).
      */
     private int forBodies(WorkerPool.RangeTask task, int from, int to) {
         int threads = pool == null ? 1 : pool.getThreadCount();
         for (int w = 0; w < threads; w++) {
-            workerFound[w * PAD] = 0;
+            partFound[w * PAD] = 0;
         }
         if (pool == null) {
             task.run(0, from, to);
@@ -119,7 +119,7 @@ final class Solver {
         copyList = null;
         int kinematic = 0;
         for (int w = 0; w < parts; w++) {
-            kinematic += workerFound[w * PAD];
+            kinematic += partFound[w * PAD];
         }
         bodies.kinematicCount = kinematic;
     }
@@ -139,7 +139,7 @@ final class Solver {
         int parts = forBodies(writeBackTask, 1, end);
         int first = end;
         for (int w = 0; w < parts; w++) {
-            int found = workerFound[w * PAD];
+            int found = partFound[w * PAD];
             // 0: none in its part, or no part.
             if (found != 0) {
                 first = Math.min(first, found);
