@@ -1129,11 +1129,12 @@ public abstract class Simulation {
      * narrowphase, 32 in a colour and 256 bodies. An idle thread spins about 80 µs, then parks:
      * between ticks, and within a tick while the calling thread does serial work longer than that.
      * The calling thread takes the parts no worker has taken once done with its own, so a parked
-     * worker, or one the system does not schedule, never holds a tick up. Measured with two threads on a 2-core virtual machine (`./emini bench`, two runs on
-     * 2026-11-29): ten 20-row pyramids 1.3 to 1.45 times the one-thread speed, rain of 5,000 to 20,000
-     * bodies 1.35 to 1.85, the tumbler 1.1 to 1.2, when the host left both cores free; in busier
-     * minutes two threads ran at 0.75 to 1.0 times one: try it on the target device. Call with 1 to
-     * stop the threads when the world is no longer used.
+     * worker, or one the system does not schedule, never holds a tick up. Measured with two threads on
+     * a 2-core virtual machine (`./emini bench`, two runs on 2026-11-29, session 15): ten 20-row
+     * pyramids 1.79 times the one-thread speed, rain of 10,000 bodies 1.80, rain of 2,000 to 20,000
+     * 1.4 to 2.1, the tumbler 1.3 to 1.46, when the host left both cores free; in a run where it took
+     * the second core away at times, 0.89 to 0.96 times one: try it on the target device. Call with 1
+     * to stop the threads when the world is no longer used.
      *
      * @param workers the threads that share the solve, counting the one that calls {@link #tick()}:
      *     1 to 64
