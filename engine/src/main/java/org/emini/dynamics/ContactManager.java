@@ -44,8 +44,8 @@ final class ContactManager implements PairCallback, QueryCallback {
     private float phaseSpeculative;
     private final WorkerPool.RangeTask collideTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
-            collideRange(worker, from, to);
+        public void run(int part, int from, int to) {
+            collideRange(part, from, to);
         }
     };
     Contact[] contacts = new Contact[64];

@@ -156,8 +156,8 @@ final class ContactSolver {
     private int passCurrent;
     private final WorkerPool.RangeTask passTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
-            passRange(worker, from, to);
+        public void run(int part, int from, int to) {
+            passRange(part, from, to);
         }
     };
     // The prepare that prepareTask runs.
@@ -168,19 +168,19 @@ final class ContactSolver {
     private float prepareImpulseStep;
     private final WorkerPool.RangeTask prepareTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
-            prepareRange(worker, from, to);
+        public void run(int part, int from, int to) {
+            prepareRange(part, from, to);
         }
     };
     private final WorkerPool.RangeTask warmTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
+        public void run(int part, int from, int to) {
             warmRange(from, to);
         }
     };
     private final WorkerPool.RangeTask storeTask = new WorkerPool.RangeTask() {
         @Override
-        public void run(int worker, int from, int to) {
+        public void run(int part, int from, int to) {
             storeRange(from, to);
         }
     };

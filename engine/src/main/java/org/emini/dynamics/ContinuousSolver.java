@@ -34,6 +34,11 @@ import org.emini.shape.Shape;
  * by the pair's speculative contact, whose margin grows with both bodies' speeds.
  */
 final class ContinuousSolver implements QueryCallback {
+    // A slot's mark: nothing to do, a sweep, or a state outside the finite range.
+    private static final byte STILL = 0;
+    private static final byte FAST = 1;
+    private static final byte NOT_FINITE = 2;
+
     private final Simulation world;
     private final TimeOfImpact toi = new TimeOfImpact();
     private final float[] box = new float[4];
@@ -65,10 +70,7 @@ final class ContinuousSolver implements QueryCallback {
     private int metCount;
 
     private final LandscapeSweep segments = new LandscapeSweep();
-    // Per slot, what mark() found: nothing to do, a sweep, or a state outside the finite range.
-    private static final byte STILL = 0;
-    private static final byte FAST = 1;
-    private static final byte NOT_FINITE = 2;
+    // Per slot, what mark() found.
     private byte[] marks = new byte[8];
 
     ContinuousSolver(Simulation world) {

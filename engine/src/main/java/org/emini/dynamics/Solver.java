@@ -124,7 +124,6 @@ final class Solver {
         bodies.kinematicCount = kinematic;
     }
 
-
     private void integratePositions(float h) {
         substep = h;
         forBodies(integrateTask, 1, bodies.count);
