@@ -32,7 +32,8 @@ import java.util.List;
  * windows, the two build folders, and optionally a thread count: above 1, both worlds solve with
  * that many threads ({@code World.setWorkerCount}) and each tick is timed by the wall clock, since
  * the thread's CPU clock misses the workers. Each world's idle workers spin a while after its tick,
- * during the other's: compare builds that park their workers alike.
+ * during the other's: compare builds that park their workers alike, and time threaded changes in
+ * separate JVMs too ({@link TickTimer}).
  */
 public final class BuildComparison {
     private BuildComparison() {
