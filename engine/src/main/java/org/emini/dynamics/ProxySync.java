@@ -206,21 +206,25 @@ final class ProxySync {
             int[] partKeys = b.partKeys;
             boolean stays = false;
             if (partKeys.length == 1 && !b.proxyDirty && !contacts.isLandscapeStale(b)) {
-                b.getShape().computeAabb(b.x, b.y, b.c, b.s, box);
                 float dx = b.vx * dt;
                 float dy = b.vy * dt;
-                stays = EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])
+                stays = finiteBox(b, b.getShape(), dx, dy, box)
                     && broadPhase.keepsBox(keys.proxy(partKeys[0]), box[0], box[1], box[2], box[3], dx, dy);
             }
             marks[i] = stays;
         }
     }
 
+    /** Puts a part's tight box into {@code box}; false when it or the displacement is not finite. */
+    private static boolean finiteBox(Body b, Shape part, float dx, float dy, float[] box) {
+        part.computeAabb(b.x, b.y, b.c, b.s, box);
+        return EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3]);
+    }
+
     /** Moves one part's proxy and finds its landscape contacts; false when its box or displacement is not finite. */
     private boolean movePart(Body b, Shape part, int key, int k, float dx, float dy, boolean lookAgain) {
         float[] box = this.box;
-        part.computeAabb(b.x, b.y, b.c, b.s, box);
-        if (!EMath.isFinite(dx + dy + box[0] + box[1] + box[2] + box[3])) {
+        if (!finiteBox(b, part, dx, dy, box)) {
             return false;
         }
         int proxy = keys.proxy(key);
