@@ -93,7 +93,16 @@ public abstract class Simulation {
     final Solver solver = new Solver(this);
     /** The most threads {@link #setWorkerCount} takes. */
     public static final int MAX_WORKERS = 64;
+    /**
+     * The fewest simulated bodies for which a tick shares its loops with the worker threads. Below it
+     * the hand-offs cost more than they save: at two threads (separate JVMs, 2026-11-29) the 20-row
+     * pyramid (211 bodies) took 0.240-0.265 ms a tick against 0.230-0.239 at one, rain of 200 bodies
+     * 0.236-0.248 against 0.225-0.226, while rain of 500 took 0.553-0.590 against 0.657-0.680.
+     */
+    static final int MIN_THREADED_BODIES = 400;
     private WorkerPool pool;
+    /** Ticks with fewer simulated bodies than this run on the calling thread alone (see setWorkerCount). */
+    private int minThreadedBodies = MIN_THREADED_BODIES;
     private final ElementList<Constraint> constraints = new ElementList<Constraint>(changes, new Constraint[8], "Constraint",
         "constraint");
     private Landscape landscape = new Landscape();
@@ -1115,6 +1124,12 @@ public abstract class Simulation {
         solver.setMinParallelPart(contacts);
         this.contacts.minPart = contacts;
         proxies.setMinParallelPart(contacts);
+        minThreadedBodies = 0;
+    }
+
+    /** Whether the last tick shared its loops with worker threads (for tests). */
+    boolean sharedLastTick() {
+        return pool != null && !pool.isAlone();
     }
 
     /**
@@ -1126,7 +1141,8 @@ public abstract class Simulation {
      * touches, in the contacts' order; they mark the bodies whose broadphase boxes stay and those fast
      * enough to sweep, and the calling thread moves and sweeps those in order); the joints, the
      * colouring, the velocity integration and the broadphase's changes are not. Parts are at least 64 contacts in the
-     * narrowphase, 32 in a colour and 256 bodies. An idle thread spins about 80 µs, then parks:
+     * narrowphase, 32 in a colour and 256 bodies, and a tick with fewer than 400 simulated bodies runs on
+     * the calling thread alone (the hand-offs would cost it more than they save). An idle thread spins about 80 µs, then parks:
      * between ticks, and within a tick while the calling thread does serial work longer than that.
      * The calling thread takes the parts no worker has taken once done with its own, so a parked
      * worker, or one the system does not schedule, never holds a tick up. Measured with two threads on
@@ -1272,6 +1288,9 @@ public abstract class Simulation {
     protected void step(float dt) {
         stepData.begin(tickCount);
         area.collect(this, broadPhase, bodies.ordered(), bodies.count());
+        if (pool != null) {
+            pool.setAlone(area.count < minThreadedBodies);
+        }
         stepData.recordStart(area.bodies, area.count);
         contacts.beginLandscape(landscape);
         Body overflow = proxies.update(area.bodies, area.count, settings.getAabbMargin(), dt);

@@ -52,6 +52,7 @@ public final class WorkerPool {
     /** Parts of the current job finished. */
     private final AtomicInteger done = new AtomicInteger();
     private volatile boolean stopping;
+    private boolean alone;
     private volatile Throwable failure;
     private int jobs;
     private RangeTask task;
@@ -104,7 +105,7 @@ public final class WorkerPool {
     public void run(RangeTask t, int from, int to, int minPart) {
         int n = to - from;
         int p = Math.min(threads, n / Math.max(1, minPart));
-        if (p <= 1) {
+        if (p <= 1 || alone) {
             t.run(0, from, to);
             return;
         }
@@ -144,6 +145,26 @@ public final class WorkerPool {
             }
             throw new IllegalStateException("WorkerPool: a worker failed", f);
         }
+    }
+
+    /**
+     * While set, {@link #run} runs every task whole on the calling thread, and the workers park once
+     * their spin ends: for ticks too small to pay for handing parts over. Called by the calling thread,
+     * between runs.
+     *
+     * @param calling true to run alone
+     */
+    public void setAlone(boolean calling) {
+        alone = calling;
+    }
+
+    /**
+     * Whether {@link #run} runs every task whole on the calling thread (see {@link #setAlone}).
+     *
+     * @return true while alone
+     */
+    public boolean isAlone() {
+        return alone;
     }
 
     /** Runs one part, keeps its failure for {@link #run} to rethrow, and counts it done. */

@@ -151,6 +151,27 @@ class WorkerCountTest {
     }
 
     @Test
+    void aWorldOfFewBodiesTicksOnTheCallingThreadAlone() {
+        World world = new World();
+        world.setTicksPerSecond(60);
+        world.setWorkerCount(2);
+        try {
+            Scenes.ground(world, 0f, 20000f);
+            int below = Simulation.MIN_THREADED_BODIES - 1;
+            for (int i = 0; i < below; i++) {
+                world.addBody(new Body(-9000f + 45f * i, -100f, Shape.createRectangle(20f, 20f), true));
+            }
+            world.tick();
+            assertTrue(!((Simulation) world).sharedLastTick(), below + " bodies: alone");
+            world.addBody(new Body(-9000f, -200f, Shape.createRectangle(20f, 20f), true));
+            world.tick();
+            assertTrue(((Simulation) world).sharedLastTick(), (below + 1) + " bodies: shared");
+        } finally {
+            world.setWorkerCount(1);
+        }
+    }
+
+    @Test
     void theCollisionFilterIsAskedOnTheTickingThreadOnly() {
         World world = new World();
         world.setTicksPerSecond(60);

@@ -123,4 +123,25 @@ class WorkerPoolTest {
             pool.close();
         }
     }
+
+    @Test
+    void whileAloneEveryRangeRunsWholeOnTheCallingThread() {
+        WorkerPool pool = new WorkerPool(2, null);
+        try {
+            pool.setAlone(true);
+            Recorder r = new Recorder();
+            pool.run(r, 0, 1000, 1);
+            assertSame(Thread.currentThread(), r.ranBy[0]);
+            assertEquals(0, r.partFrom[0]);
+            assertEquals(1000, r.partTo[0]);
+            assertTrue(r.ranBy[1] == null, "no second part");
+            pool.setAlone(false);
+            Recorder split = new Recorder();
+            pool.run(split, 0, 1000, 1);
+            assertEquals(500, split.partTo[0]);
+            assertEquals(1000, split.partTo[1]);
+        } finally {
+            pool.close();
+        }
+    }
 }
