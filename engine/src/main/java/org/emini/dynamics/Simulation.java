@@ -95,9 +95,10 @@ public abstract class Simulation {
     public static final int MAX_WORKERS = 64;
     /**
      * The fewest simulated bodies for which a tick shares its loops with the worker threads. Below it
-     * the hand-offs cost more than they save: at two threads (separate JVMs, 2026-11-29) the 20-row
-     * pyramid (211 bodies) took 0.240-0.265 ms a tick against 0.230-0.239 at one, rain of 200 bodies
-     * 0.236-0.248 against 0.225-0.226, while rain of 500 took 0.553-0.590 against 0.657-0.680.
+     * the hand-offs cost more than they save. Separate JVMs, 3 runs each (median, range), 2026-11-29: the
+     * 20-row pyramid (211 bodies) took 0.254 ms a tick at two threads (0.240-0.265) against 0.239 at one
+     * (0.230-0.290), rain of 200 bodies 0.248 (0.236-0.248) against 0.226 (0.225-0.277), while rain of
+     * 500 took 0.572 (0.553-0.576) against 0.663 (0.657-0.680).
      */
     static final int MIN_THREADED_BODIES = 400;
     private WorkerPool pool;

@@ -113,12 +113,7 @@ class WorkerPoolTest {
     void aShortRangeRunsWholeOnTheCallingThread() {
         WorkerPool pool = new WorkerPool(4, null);
         try {
-            Recorder r = new Recorder();
-            pool.run(r, 10, 50, 30);
-            assertSame(Thread.currentThread(), r.ranBy[0]);
-            assertEquals(10, r.partFrom[0]);
-            assertEquals(50, r.partTo[0]);
-            assertTrue(r.ranBy[1] == null, "no second part");
+            assertRunsWholeOnTheCallingThread(pool, 10, 50, 30);
         } finally {
             pool.close();
         }
@@ -129,12 +124,7 @@ class WorkerPoolTest {
         WorkerPool pool = new WorkerPool(2, null);
         try {
             pool.setAlone(true);
-            Recorder r = new Recorder();
-            pool.run(r, 0, 1000, 1);
-            assertSame(Thread.currentThread(), r.ranBy[0]);
-            assertEquals(0, r.partFrom[0]);
-            assertEquals(1000, r.partTo[0]);
-            assertTrue(r.ranBy[1] == null, "no second part");
+            assertRunsWholeOnTheCallingThread(pool, 0, 1000, 1);
             pool.setAlone(false);
             Recorder split = new Recorder();
             pool.run(split, 0, 1000, 1);
@@ -143,5 +133,15 @@ class WorkerPoolTest {
         } finally {
             pool.close();
         }
+    }
+
+    /** One part, index 0, covering [from, to), run by the calling thread. */
+    private static void assertRunsWholeOnTheCallingThread(WorkerPool pool, int from, int to, int minPart) {
+        Recorder r = new Recorder();
+        pool.run(r, from, to, minPart);
+        assertSame(Thread.currentThread(), r.ranBy[0]);
+        assertEquals(from, r.partFrom[0]);
+        assertEquals(to, r.partTo[0]);
+        assertTrue(r.ranBy[1] == null, "no second part");
     }
 }
