@@ -20,23 +20,38 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /** The report's plots, written with XChart as SVG (for the page) and PNG. */
 public final class Charts {
+    // One colour per engine of a full run (eight, with emini-2t), so that no two share one.
     private static final Color[] COLORS = {
         new Color(0xD62728), new Color(0x1F77B4), new Color(0x2CA02C), new Color(0xFF7F0E), new Color(0x9467BD),
-        new Color(0x8C564B), new Color(0x17BECF)};
+        new Color(0x8C564B), new Color(0x17BECF), new Color(0xE377C2), new Color(0xBCBD22)};
 
     private Charts() {
     }
 
+    /** How many engines the plots tell apart by colour. */
+    public static int colourCount() {
+        return COLORS.length;
+    }
+
+    /**
+     * The scene plot's lowest tick: the power of ten at or below the fastest bar, so that every
+     * measured bar shows and the stand-in for a missing one (1e-6) does not.
+     */
+    static double floor(double fastest) {
+        return fastest < Double.POSITIVE_INFINITY ? Math.pow(10, Math.floor(Math.log10(fastest))) : 0.01;
+    }
+
     /** Time per tick of every scene and engine, grouped by scene, log scale. Returns the file stem. */
     public static String sceneTimes(Path dir, List<BenchReport.SceneEntry> scenes, List<String> engines) throws IOException {
-        CategoryChart c = new CategoryChartBuilder().width(900).height(480)
+        CategoryChart c = new CategoryChartBuilder().width(1100).height(520)
             .title("Time per tick (CPU ms, log scale)").xAxisTitle("scene").yAxisTitle("ms per tick").build();
         c.getStyler().setYAxisLogarithmic(true);
-        c.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        // Outside the plot: inside, it covered the first scene's bars.
+        c.getStyler().setLegendPosition(Styler.LegendPosition.OutsideE);
         c.getStyler().setSeriesColors(COLORS);
         c.getStyler().setChartBackgroundColor(Color.WHITE);
         c.getStyler().setAvailableSpaceFill(0.8);
-        c.getStyler().setXAxisLabelRotation(0);
+        c.getStyler().setXAxisLabelRotation(20);
         List<String> names = new ArrayList<>();
         for (BenchReport.SceneEntry s : scenes) {
             if ("ran".equals(s.status())) {
@@ -46,6 +61,7 @@ public final class Charts {
         if (names.isEmpty()) {
             return null;
         }
+        double least = Double.POSITIVE_INFINITY;
         for (String engine : engines) {
             List<Double> ys = new ArrayList<>();
             for (BenchReport.SceneEntry s : scenes) {
@@ -56,6 +72,7 @@ public final class Charts {
                 for (Measurement m : s.results()) {
                     if (m.engine().equals(engine) && m.cost() != null) {
                         y = m.cost();
+                        least = Math.min(least, y);
                     }
                 }
                 // XChart's log axis cannot draw a missing bar; a tiny value stands for "did not run".
@@ -63,7 +80,8 @@ public final class Charts {
             }
             c.addSeries(engine, names, ys);
         }
-        c.getStyler().setYAxisMin(0.01);
+        // A fixed 0.01 hid a sleeping scene's 0.005 ms bars.
+        c.getStyler().setYAxisMin(floor(least));
         return save(c, dir, "scenes");
     }
 

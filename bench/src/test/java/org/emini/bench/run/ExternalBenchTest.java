@@ -3,6 +3,7 @@ package org.emini.bench.run;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonNull;
@@ -11,6 +12,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.emini.bench.engine.Engines;
+import org.emini.bench.report.Charts;
 import org.emini.bench.scene.BenchScenes;
 import org.emini.harness.scenario.BodySpec;
 import org.emini.harness.scenario.Scenario;
@@ -25,6 +28,13 @@ import org.junit.jupiter.api.io.TempDir;
 class ExternalBenchTest {
     private static final BenchScenes SCENES = BenchScenes.open();
     private static final String PYRAMID = "bench/pyramid-20";
+
+    @Test
+    void everyEngineOfAFullRunHasAColourOfItsOwnInThePlots() {
+        // Seven colours for eight engines made Emini and Rapier the same red.
+        int engines = Engines.ALL.size() + ExternalBench.IDS.size();
+        assertTrue(Charts.colourCount() >= engines, Charts.colourCount() + " colours for " + engines + " engines");
+    }
 
     /** A driver's entry for the pyramid whose bodies never moved, in px or metres; box 1 moved by dx px at the check. */
     private static JsonObject entry(String engine, boolean metres, double dx) {
