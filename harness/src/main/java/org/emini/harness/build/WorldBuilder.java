@@ -22,6 +22,11 @@ public final class WorldBuilder {
     private WorldBuilder() {
     }
 
+    /** The engine's default speculative distance, which {@code run --nudge} scales in a scene that sets none. */
+    public static double defaultSpeculativeDistance() {
+        return new SolverSettings().getSpeculativeDistance();
+    }
+
     /**
      * Builds the world.
      *

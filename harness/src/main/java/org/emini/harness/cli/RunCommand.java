@@ -68,6 +68,12 @@ final class RunCommand implements Callable<Integer> {
                     + "Scaled runs). ./emini run runs the stacking and fast-body scenes at 0.025 and 25.")
     Double scale;
 
+    @Option(names = "--nudge", paramLabel = "F",
+            description = "Run every scene with the engine's speculative distance times F (the scene's own or the "
+                    + "default 0.5 px): with F = 0.98 or 1.02 a verdict that flips was reached by the round-off's luck, "
+                    + "not by a margin (harness/README.md, Nudged runs).")
+    Double nudge;
+
     @Option(names = "-k", paramLabel = "PATTERN",
             description = "Only the scenes whose id matches: a glob (stacking/*, *-60hz) or a substring (pendulum); "
                     + "repeat for several.")
@@ -102,6 +108,10 @@ final class RunCommand implements Callable<Integer> {
         if (scale != null) {
             Options.require(spec, scale > 0 && !scale.isInfinite(), "--scale must be finite and > 0, was " + scale);
             loaded = SceneBatch.scaled(loaded, scale);
+        }
+        if (nudge != null) {
+            Options.require(spec, nudge > 0 && !nudge.isInfinite(), "--nudge must be finite and > 0, was " + nudge);
+            loaded = SceneBatch.nudged(loaded, nudge);
         }
         long totalTicks = 0;
         int width = 10;
@@ -138,8 +148,12 @@ final class RunCommand implements Callable<Integer> {
         if (slept != null) {
             System.out.println(slept);
         }
+        String nudged = nudge == null ? null : "nudged: every scene's speculative distance times " + nudge;
+        if (nudged != null) {
+            System.out.println(nudged);
+        }
         ResultsWriter.write(reports.resolve("results.json"), results, summary, traces,
-                sleeping == Sleeping.scene ? null : sleeping.name());
+                sleeping == Sleeping.scene ? null : sleeping.name(), nudge);
         JUnitXmlWriter.write(reports.resolve("junit").resolve("TEST-scenarios.xml"), results, summary);
         if (junit != null) {
             JUnitXmlWriter.write(junit, results, summary);
@@ -151,6 +165,9 @@ final class RunCommand implements Callable<Integer> {
         text.append(summary).append('\n');
         if (slept != null) {
             text.append(slept).append('\n');
+        }
+        if (nudged != null) {
+            text.append(nudged).append('\n');
         }
         Files.writeString(reports.resolve("summary.txt"), text, StandardCharsets.UTF_8);
         return summary.failed() ? 1 : 0;

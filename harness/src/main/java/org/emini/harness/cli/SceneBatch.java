@@ -12,6 +12,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.function.LongConsumer;
+import org.emini.harness.build.WorldBuilder;
 import org.emini.harness.load.Problem;
 import org.emini.harness.load.ScenarioLoader;
 import org.emini.harness.report.TraceWriter;
@@ -75,6 +76,20 @@ final class SceneBatch implements AutoCloseable {
         List<ScenarioLoader.Loaded> out = new ArrayList<>();
         for (ScenarioLoader.Loaded l : scenes) {
             out.add(l.ok() ? new ScenarioLoader.Loaded(l.file(), l.scenario().withSleeping(on), l.problems()) : l);
+        }
+        return out;
+    }
+
+    /**
+     * The scenes with the engine's speculative distance times {@code factor} ({@code run --nudge},
+     * {@link Scenario#withNudge}); invalid scenes stay as they are.
+     */
+    static List<ScenarioLoader.Loaded> nudged(List<ScenarioLoader.Loaded> scenes, double factor) {
+        double defaultDistance = WorldBuilder.defaultSpeculativeDistance();
+        List<ScenarioLoader.Loaded> out = new ArrayList<>();
+        for (ScenarioLoader.Loaded l : scenes) {
+            out.add(l.ok() ? new ScenarioLoader.Loaded(l.file(), l.scenario().withNudge(factor, defaultDistance),
+                    l.problems()) : l);
         }
         return out;
     }

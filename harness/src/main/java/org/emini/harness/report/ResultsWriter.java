@@ -26,16 +26,18 @@ public final class ResultsWriter {
      * @param traces the folder the traces went to (for relative links), or null if none were written
      */
     public static void write(Path file, List<SceneResult> results, Summary summary, Path traces) throws IOException {
-        write(file, results, summary, traces, null);
+        write(file, results, summary, traces, null, null);
     }
 
     /**
-     * Writes the results of a run that forced sleeping on or off ({@code run --sleeping}).
+     * Writes the results of a run that forced sleeping on or off ({@code run --sleeping}) or nudged
+     * every scene ({@code run --nudge}).
      *
      * @param sleeping {@code on} or {@code off} as forced, or null when each scene had its own setting
+     * @param nudge the factor on every scene's speculative distance, or null for none
      */
-    public static void write(Path file, List<SceneResult> results, Summary summary, Path traces, String sleeping)
-            throws IOException {
+    public static void write(Path file, List<SceneResult> results, Summary summary, Path traces, String sleeping,
+            Double nudge) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
         try (Writer out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
             JsonWriter json = new JsonWriter(out);
@@ -46,6 +48,9 @@ public final class ResultsWriter {
             json.name("generated").value(Instant.now().toString());
             if (sleeping != null) {
                 json.name("sleeping").value(sleeping);
+            }
+            if (nudge != null) {
+                json.name("nudge").value(nudge);
             }
             json.name("summary").beginObject();
             json.name("scenes").value(summary.total());

@@ -1,5 +1,6 @@
 package org.emini.harness.scenario;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -25,6 +26,8 @@ public record Scenario(String name, String file, String description, String cate
                        Map<String, ShapeSpec> shapes, List<BodySpec> bodies, List<ActionSpec> actions,
                        Map<String, Section> elements, RunSpec run, Section closedForm, Section oracle,
                        KnownFailure knownFailure) {
+    /** The solver key {@link #withNudge} scales (a SolverSettings name, as world.solver spells it). */
+    public static final String SPECULATIVE_DISTANCE = "speculativeDistance";
 
     /** The body with this name, or null. */
     public BodySpec body(String bodyName) {
@@ -48,6 +51,24 @@ public record Scenario(String name, String file, String description, String cate
      */
     public Scenario withSleeping(boolean on) {
         return new Scenario(name, file, description, category, world.withSleeping(world.sleeping().switched(on)),
+                shapes, bodies, actions, elements, run, closedForm, oracle, knownFailure);
+    }
+
+    /**
+     * This scene with the engine's speculative distance (the scene's own, or the engine's default)
+     * times {@code factor}: {@code run --nudge}. A verdict that flips under a nudge of a percent or two
+     * was reached by the round-off's luck, not by a margin.
+     *
+     * @param factor finite and &gt; 0
+     * @param defaultDistance the engine's default speculative distance, for a scene that sets none
+     */
+    public Scenario withNudge(double factor, double defaultDistance) {
+        if (!(factor > 0) || Double.isInfinite(factor)) {
+            throw new IllegalArgumentException("nudge factor must be finite and > 0, was " + factor);
+        }
+        Map<String, Double> solver = new HashMap<>(world.solver());
+        solver.put(SPECULATIVE_DISTANCE, solver.getOrDefault(SPECULATIVE_DISTANCE, defaultDistance) * factor);
+        return new Scenario(name, file, description, category, world.withSolver(solver),
                 shapes, bodies, actions, elements, run, closedForm, oracle, knownFailure);
     }
 

@@ -28,4 +28,10 @@ public record WorldSpec(double timestep, int iterations, boolean dynamicIteratio
         return new WorldSpec(timestep, iterations, dynamicIterations, gravityX, gravityY, dampingLateral,
                 dampingRotational, hasSimulationArea, solver, newSleeping);
     }
+
+    /** This world with other engine tunables (by SolverSettings name). */
+    public WorldSpec withSolver(Map<String, Double> newSolver) {
+        return new WorldSpec(timestep, iterations, dynamicIterations, gravityX, gravityY, dampingLateral,
+                dampingRotational, hasSimulationArea, Map.copyOf(newSolver), sleeping);
+    }
 }

@@ -74,6 +74,19 @@ class RunCommandTest {
     }
 
     @Test
+    void aNudgedRunSaysSoAndAFactorOfZeroIsAUsageError(@TempDir Path dir) throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("a-pass.yaml"), String.format(FALLING, "name: falls"));
+        Path reports = dir.resolve("reports");
+        assertEquals(0, Main.execute("run", "--schema", Repo.schema().toString(), "--reports", reports.toString(),
+                "--no-progress", "--nudge", "1.02", scenes.toString()));
+        assertEquals(1.02, results(reports).get("nudge").getAsDouble());
+        assertTrue(Files.readString(reports.resolve("summary.txt")).contains("speculative distance times 1.02"));
+        assertEquals(2, Main.execute("run", "--schema", Repo.schema().toString(), "--reports",
+                dir.resolve("r2").toString(), "--no-progress", "--nudge", "0", scenes.toString()));
+    }
+
+    @Test
     void anOriginalWorldFileRunsAsAScene(@TempDir Path dir) throws Exception {
         Path world = Repo.referenceWorlds().resolve("test_basic.world");
         Path scenes = Files.createDirectories(dir.resolve("worlds"));
