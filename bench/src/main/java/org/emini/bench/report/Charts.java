@@ -35,10 +35,11 @@ public final class Charts {
 
     /**
      * The scene plot's lowest tick: the power of ten at or below the fastest bar, so that every
-     * measured bar shows and the stand-in for a missing one (1e-6) does not.
+     * measured bar shows and the stand-in for a missing one (1e-6) does not; 0.01 when no bar has a
+     * positive finite time (a log axis cannot start at 0).
      */
     static double floor(double fastest) {
-        return fastest < Double.POSITIVE_INFINITY ? Math.pow(10, Math.floor(Math.log10(fastest))) : 0.01;
+        return fastest > 0 && fastest < Double.POSITIVE_INFINITY ? Math.pow(10, Math.floor(Math.log10(fastest))) : 0.01;
     }
 
     /** Time per tick of every scene and engine, grouped by scene, log scale. Returns the file stem. */

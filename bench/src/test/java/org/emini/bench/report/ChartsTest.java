@@ -18,5 +18,8 @@ class ChartsTest {
             assertTrue(floor > 1e-6, "a missing bar stands at 1e-6 and must stay hidden: " + floor);
         }
         assertEquals(0.01, Charts.floor(Double.POSITIVE_INFINITY), 0.0, "nothing measured");
+        // A zero time would put the log axis at 0 (log10 of 0 is minus infinity).
+        assertEquals(0.01, Charts.floor(0), 0.0, "a zero time");
+        assertEquals(0.01, Charts.floor(Double.NaN), 0.0, "no figure");
     }
 }
