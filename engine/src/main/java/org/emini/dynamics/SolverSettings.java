@@ -281,8 +281,10 @@ public final class SolverSettings {
     }
 
     /**
-     * Stiffness of the position correction of rigid joints, as a natural frequency, capped at a
-     * quarter of the substep rate. Default 60 Hz (Box2D v3).
+     * Stiffness of the position correction of rigid joints, as a natural frequency, capped at twice
+     * the contact cap ({@link #getSubstepHertzRatio()}), half the substep rate by default: as stiff
+     * as a contact with a static body, so a joint pulled against one does not give way. Default 60 Hz
+     * (Box2D v3's setting; Box2D v3 caps it at an eighth of the substep rate).
      *
      * @return the joint frequency (Hz)
      */
@@ -441,10 +443,10 @@ public final class SolverSettings {
     }
 
     /**
-     * The stiffest contact and joint softness, as a fraction of the substep rate: the contact and
-     * joint frequencies are capped at this ratio times 1/h. Default 0.25, as Box2D v3 caps its
-     * contact hertz at a quarter of the substep rate; stiffer springs than that ring at the
-     * substep rate instead of acting stiffer.
+     * The stiffest contact softness, as a fraction of the substep rate: the contact frequency is
+     * capped at this ratio times 1/h, contacts with static bodies and rigid joints at twice that.
+     * Default 0.25, as Box2D v3 caps its contact hertz at a quarter of the substep rate; stiffer
+     * springs than that ring at the substep rate instead of acting stiffer.
      *
      * @return the ratio
      */

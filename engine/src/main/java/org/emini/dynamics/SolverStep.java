@@ -27,7 +27,9 @@ public final class SolverStep {
         this.h = h;
         this.invH = 1f / h;
         this.jointPushMax = settings.getJointPushMaxVelocity();
-        float hertz = Math.min(settings.getJointHertz(), settings.getSubstepHertzRatio() * invH);
+        // Twice the contact cap, as stiff as a static contact: a joint held against a static body's
+        // contact (a limb caught on a step) would otherwise give way to it.
+        float hertz = Math.min(settings.getJointHertz(), 2f * settings.getSubstepHertzRatio() * invH);
         jointSoftness.set(hertz, settings.getJointDampingRatio(), h);
     }
 
