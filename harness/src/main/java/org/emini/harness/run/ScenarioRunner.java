@@ -26,7 +26,8 @@ import org.emini.harness.scenario.Scenario;
 
 /**
  * Runs one scene: builds the world, ticks it for the run's duration applying scheduled actions,
- * samples the requested bodies and metrics, then judges the expectations.
+ * samples the requested bodies and metrics, then judges the expectations (those on extremes on every
+ * tick, {@link EveryTick}).
  */
 public final class ScenarioRunner {
     private ScenarioRunner() {
@@ -53,9 +54,11 @@ public final class ScenarioRunner {
         long t0 = System.nanoTime();
         BuiltWorld built;
         List<Metric> metrics;
+        EveryTick everyTick;
         try {
             built = WorldBuilder.build(scenario);
             metrics = Metrics.create(scenario.run().record().metrics(), built);
+            everyTick = EveryTick.of(scenario, built, samplingTicks(scenario.run().record(), scenario.world().timestep()));
         } catch (UnsupportedElementException e) {
             progress.accept(ticks);
             return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null, -1, null);
@@ -80,6 +83,9 @@ public final class ScenarioRunner {
         ReplayRecorder replay = ReplayRecorder.of(built, ticks);
         try {
             sample(trace, 0, bodies, metrics);
+            if (everyTick != null) {
+                everyTick.afterTick(0);
+            }
             if (replay != null) {
                 replay.after(0);
             }
@@ -102,6 +108,9 @@ public final class ScenarioRunner {
                 }
                 for (Metric m : metrics) {
                     m.afterTick();
+                }
+                if (everyTick != null) {
+                    everyTick.afterTick(k + 1);
                 }
                 if (replay != null) {
                     replay.after(k + 1);
@@ -128,7 +137,8 @@ public final class ScenarioRunner {
         ClosedForm closedForm = ClosedForms.of(scenario);
         List<Verdict> verdicts = new ArrayList<>();
         for (ExpectationSpec e : scenario.run().expect()) {
-            verdicts.add(Evaluator.evaluate(e, trace, closedForm));
+            Trace judged = everyTick != null && everyTick.judges(e) ? everyTick.trace() : trace;
+            verdicts.add(Evaluator.evaluate(e, judged, closedForm));
         }
         List<String> stale = new ArrayList<>();
         StringBuilder message = new StringBuilder();
@@ -229,7 +239,7 @@ public final class ScenarioRunner {
         return new ArrayList<>(out);
     }
 
-    private static void sample(Trace trace, long tick, Body[] bodies, List<Metric> metrics) {
+    static void sample(Trace trace, long tick, Body[] bodies, List<Metric> metrics) {
         double[] row = new double[trace.channels().size()];
         int i = 0;
         for (Body b : bodies) {
