@@ -4,7 +4,8 @@
 # unless the page reports no script errors, every section filled, the plots loaded and the replay
 # moving (and, with EMINI_REQUIRE_ORACLE set, the oracle's points and maps present; with
 # EMINI_REQUIRE_BENCH set, the benchmark's table in the Speed section; with EMINI_REQUIRE_SLEEPING set,
-# sleeping bodies drawn in a replay and the run with sleeping on summarised; with EMINI_REQUIRE_DETAILS set,
+# sleeping bodies drawn in a replay and the run with sleeping on summarised; with EMINI_REQUIRE_NUDGED set, the
+# nudged run summarised; with EMINI_REQUIRE_DETAILS set,
 # the comparison's summary table, a yellow bounded-energy cell and a landscape drawn). Installs Debian's
 # chromium first when /usr/bin/chromium is missing.
 #   harness/src/test/browser/check-dashboard.sh REPORTS [SCREENSHOT.png]
@@ -53,6 +54,13 @@ if [ -n "${EMINI_REQUIRE_SLEEPING:-}" ]; then
   case "$result" in
     *'"sleepingReplays":0'*|*'"sleepingSummary":false'*)
       echo "check-dashboard: FAILED: no sleeping replay or no summary of the run with sleeping on" >&2; exit 1 ;;
+  esac
+fi
+# With EMINI_REQUIRE_NUDGED set the reports hold a nudged run (reports/nudged/*): the verdicts must summarise it.
+if [ -n "${EMINI_REQUIRE_NUDGED:-}" ]; then
+  case "$result" in
+    *'"nudgedSummaries":'[1-9]*) ;;
+    *) echo "check-dashboard: FAILED: no summary of the nudged run" >&2; exit 1 ;;
   esac
 fi
 # With EMINI_REQUIRE_DETAILS set (./emini test: the smoke reports hold a comparison, a stability map with a

@@ -59,7 +59,8 @@ public final class DashboardWriter {
         JsonObject data = new JsonObject();
         JsonObject results = readJson(reports.resolve("results.json"));
         data.add("results", results);
-        data.add("sleeping", sleepingRun(readJson(reports.resolve("sleeping").resolve("results.json"))));
+        data.add("sleeping", variantRun(readJson(reports.resolve("sleeping").resolve("results.json"))));
+        data.add("nudged", nudgedRuns(reports.resolve("nudged")));
         data.add("compare", readJson(reports.resolve("compare").resolve("compare.json")));
         JsonObject stability = readJson(reports.resolve("stability").resolve("stability.json"));
         if (stability != null && stability.has("families")) {
@@ -194,17 +195,19 @@ public final class DashboardWriter {
     }
 
     /**
-     * The library run with sleeping forced on ({@code reports/sleeping/results.json}, written by
-     * {@code ./emini run}): its summary and each scene's status, message and how many bodies slept, or
-     * null when there is none.
+     * A library run with one thing changed, beside the run as written: sleeping forced on
+     * ({@code reports/sleeping/results.json}) or a nudged speculative distance ({@code reports/nudged/}),
+     * both written by {@code ./emini run}. Its summary, what was changed ({@code mode}, {@code nudge}) and
+     * each scene's status, message and how many bodies slept, or null when there is none.
      */
-    static JsonObject sleepingRun(JsonObject results) {
+    static JsonObject variantRun(JsonObject results) {
         if (results == null || !results.has("scenes")) {
             return null;
         }
         JsonObject out = new JsonObject();
         out.add("generated", results.get("generated"));
         out.add("mode", results.get("sleeping"));
+        out.add("nudge", results.get("nudge"));
         out.add("summary", results.get("summary"));
         JsonArray scenes = new JsonArray();
         for (JsonElement e : results.getAsJsonArray("scenes")) {
@@ -219,6 +222,34 @@ public final class DashboardWriter {
             scenes.add(o);
         }
         out.add("scenes", scenes);
+        return out;
+    }
+
+    /**
+     * The nudged library runs ({@code reports/nudged/<name>/results.json}, one per factor, as
+     * {@code ./emini run} writes them), smallest factor first; null when there are none.
+     */
+    static JsonArray nudgedRuns(Path folder) throws IOException {
+        if (!Files.isDirectory(folder)) {
+            return null;
+        }
+        List<Path> dirs;
+        try (java.util.stream.Stream<Path> list = Files.list(folder)) {
+            dirs = list.toList();
+        }
+        List<JsonObject> runs = new java.util.ArrayList<>();
+        for (Path d : dirs) {
+            JsonObject run = variantRun(readJson(d.resolve("results.json")));
+            if (run != null && run.has("nudge") && !run.get("nudge").isJsonNull()) {
+                runs.add(run);
+            }
+        }
+        if (runs.isEmpty()) {
+            return null;
+        }
+        runs.sort(java.util.Comparator.comparingDouble(r -> r.get("nudge").getAsDouble()));
+        JsonArray out = new JsonArray();
+        runs.forEach(out::add);
         return out;
     }
 
