@@ -15,12 +15,13 @@ import org.emini.harness.scenario.MetricSpec;
 import org.emini.harness.scenario.Scenario;
 
 /**
- * The expectations on a run's extremes ({@code of: max, min, maxAbs, maxDrift} and {@code staysInside}),
- * judged on every tick when the scene records less often: a joint that opens for one tick between two
- * samples must not pass a bound on its largest error, nor a body that leaves its region and comes back.
- * Holds only the channels those expectations read, with metric instances of its own (a metric's sample
- * may keep state, such as the penetration per pair that the report shows). The recorded trace, which the
- * oracle comparison and the trace files use, is untouched.
+ * The expectations on a run's extremes ({@code of: max, min, maxAbs, maxDrift}, {@code staysInside} and a
+ * {@code stable} bound on the energy's rise), judged on every tick when the scene records less often: a
+ * joint that opens for one tick between two samples must not pass a bound on its largest error, nor a
+ * body that leaves its region and comes back. Holds only the channels those expectations read, with
+ * metric instances of its own (a metric's sample may keep state, such as the penetration per pair that
+ * the report shows). The recorded trace, which the oracle comparison and the trace files use, is
+ * untouched.
  */
 final class EveryTick {
     private final Trace trace;
@@ -44,6 +45,10 @@ final class EveryTick {
         if (e.kind() == ExpectationSpec.Kind.STAYS_INSIDE) {
             return true;
         }
+        if (e.kind() == ExpectationSpec.Kind.STABLE) {
+            // Speeds are held between samples by the stability metric; the energy's rise is not.
+            return !Double.isNaN(e.maxEnergyRise());
+        }
         return e.kind() == ExpectationSpec.Kind.METRIC && e.of() != null
                 && (e.of().equals("max") || e.of().equals("min") || e.of().equals("maxAbs") || e.of().equals("maxDrift"));
     }
@@ -66,6 +71,10 @@ final class EveryTick {
                 channels.add(e.minus());
                 channels.add(e.relativeTo() != null ? e.relativeTo().channel() : null);
                 channels.add(e.body() != null ? Channels.body(e.body(), "x") : null);
+                if (e.kind() == ExpectationSpec.Kind.STABLE) {
+                    channels.add("energy.total");
+                    channels.add("stability.maxSpeed");
+                }
             }
         }
         channels.remove(null);

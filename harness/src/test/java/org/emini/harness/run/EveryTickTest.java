@@ -58,4 +58,31 @@ class EveryTickTest {
         assertEquals(coarse.trace().column("body.ball.y")[4], coarse.verdicts().get(3).measured(), 0.0,
                 "a final value is read from the recorded trace");
     }
+
+    /**
+     * Two boxes created 4 px deep in each other without gravity are pushed apart, and a strong damping
+     * (30% a tick) takes the kinetic energy away within a few ticks: the rise lies between the samples.
+     */
+    @Test
+    void theEnergysRiseBetweenTwoSamplesCounts() {
+        String scene = String.join("\n",
+                "world: {ticksPerSecond: 60, gravity: [0, 0], damping: {lateral: 0.3}}",
+                "shapes: {box: {type: rectangle, width: 20, height: 20}}",
+                "bodies:",
+                "  - {name: a, shape: box, position: [0, 0]}",
+                "  - {name: b, shape: box, position: [16, 0]}",
+                "run:",
+                "  duration: 1",
+                "  record: {EVERY metrics: [energy, stability], bodies: none}",
+                "  expect:",
+                "    - {stable: {maxEnergyRise: 0.001}}");
+        SceneResult coarse = ScenarioRunner.run(Scenes.valid("push.yaml", scene.replace("EVERY ", "every: 0.5, ")), n -> { });
+        SceneResult fine = ScenarioRunner.run(Scenes.valid("push.yaml", scene.replace("EVERY ", "")), n -> { });
+        double[] sampled = coarse.trace().column("energy.total");
+        double sampledRise = Arrays.stream(sampled).max().orElseThrow() - sampled[0];
+        assertFalse(coarse.verdicts().get(0).passed(), coarse.verdicts().get(0).detail());
+        assertEquals(fine.verdicts().get(0).measured(), coarse.verdicts().get(0).measured(), 0.0);
+        assertTrue(coarse.verdicts().get(0).measured() > 10 * Math.max(sampledRise, 0.001),
+                coarse.verdicts().get(0).measured() + " against the samples' " + sampledRise);
+    }
 }
