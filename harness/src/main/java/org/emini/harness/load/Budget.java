@@ -5,6 +5,8 @@ import java.util.ArrayList;
 import java.util.List;
 import org.emini.harness.scenario.ActionSpec;
 import org.emini.harness.scenario.BodySpec;
+import org.emini.harness.scenario.Channels;
+import org.emini.harness.scenario.ExpectationSpec;
 import org.emini.harness.scenario.RecordSpec;
 import org.emini.harness.scenario.Scenario;
 import org.emini.harness.scenario.Section;
@@ -44,6 +46,16 @@ final class Budget {
                     + "values (%.0f samples × 6 per recorded body and 3 per metric), more than the %d a run may keep; "
                     + "record fewer bodies or sample less often (every)", values, samples, Limits.TRACE_VALUES)));
         }
+        if (record.samplingTicks(h) > 1) {
+            // Expectations on extremes are judged on every tick (run/EveryTick): their bodies and metrics too.
+            double every = (ticks + 1) * (6.0 * judgedEveryTick(s) + 3.0 * record.metrics().size());
+            if (every > Limits.TRACE_VALUES) {
+                out.add(new Excess(JsonPath.ROOT.key("run").key("expect"), String.format("the expectations on extremes "
+                        + "(max, min, maxAbs, maxDrift, staysInside, an energy rise) are judged on every tick: about %.3g "
+                        + "values (%.0f ticks), more than the %d a run may keep; bound the extremes of fewer bodies",
+                        every, ticks + 1, Limits.TRACE_VALUES)));
+            }
+        }
         Section particles = s.elements().get("particles");
         if (particles != null) {
             long pool = 0;
@@ -62,6 +74,25 @@ final class Budget {
             }
         }
         return out;
+    }
+
+    /** Bodies whose extremes an expectation reads, a group counted by its members. */
+    private static int judgedEveryTick(Scenario s) {
+        int n = 0;
+        for (ExpectationSpec e : s.run().expect()) {
+            if (!e.readsExtremes()) {
+                continue;
+            }
+            String[] bc = e.channel() != null ? Channels.bodyChannel(e.channel()) : null;
+            String body = bc != null ? bc[0] : e.body();
+            if (body != null && Channels.isGroup(body)) {
+                n += (int) s.bodies().stream().filter(b -> Channels.matches(body, b.name())).count();
+            } else if (body != null) {
+                n++;
+            }
+            n += (e.minus() != null ? 1 : 0) + (e.relativeTo() != null ? 1 : 0);
+        }
+        return n;
     }
 
     private static int recorded(Scenario s) {

@@ -35,25 +35,6 @@ final class EveryTick {
     }
 
     /**
-     * Whether an expectation reads an extreme of its series, judged here when the scene samples less
-     * often than every tick. Not one against a stored reference trace, which is matched sample by sample.
-     */
-    static boolean readsExtremes(ExpectationSpec e) {
-        if (e.minusTrace() != null) {
-            return false;
-        }
-        if (e.kind() == ExpectationSpec.Kind.STAYS_INSIDE) {
-            return true;
-        }
-        if (e.kind() == ExpectationSpec.Kind.STABLE) {
-            // Speeds are held between samples by the stability metric; the energy's rise is not.
-            return !Double.isNaN(e.maxEnergyRise());
-        }
-        return e.kind() == ExpectationSpec.Kind.METRIC && e.of() != null
-                && (e.of().equals("max") || e.of().equals("min") || e.of().equals("maxAbs") || e.of().equals("maxDrift"));
-    }
-
-    /**
      * The every-tick record of a scene, or null when there is nothing to add: the scene samples every tick,
      * or none of its expectations reads an extreme.
      *
@@ -66,7 +47,7 @@ final class EveryTick {
         }
         Set<String> channels = new LinkedHashSet<>();
         for (ExpectationSpec e : scenario.run().expect()) {
-            if (readsExtremes(e)) {
+            if (e.readsExtremes()) {
                 channels.add(e.channel());
                 channels.add(e.minus());
                 channels.add(e.relativeTo() != null ? e.relativeTo().channel() : null);
@@ -107,9 +88,9 @@ final class EveryTick {
         return new EveryTick(new Trace(scenario.world().timestep(), ordered, metricChannels), bodies, metrics);
     }
 
-    /** Whether this record judges an expectation (it reads an extreme). */
+    /** Whether this record judges an expectation ({@link ExpectationSpec#readsExtremes()}). */
     boolean judges(ExpectationSpec e) {
-        return readsExtremes(e);
+        return e.readsExtremes();
     }
 
     /** After every tick (and once before the first): the metrics' monitors, then a sample. */

@@ -67,6 +67,24 @@ public record ExpectationSpec(Kind kind, String channel, String of, double at, b
         return Channels.isGroup(b) ? b : null;
     }
 
+    /**
+     * Whether this expectation reads an extreme of its series ({@code of: max, min, maxAbs, maxDrift},
+     * {@code staysInside}, a {@code stable} bound on the energy's rise; the speeds are held between samples
+     * by the stability metric): the harness judges those on every tick whatever the scene's sampling.
+     * Not one against a stored reference trace, which is matched sample by sample.
+     */
+    public boolean readsExtremes() {
+        if (minusTrace != null) {
+            return false;
+        }
+        return switch (kind) {
+            case STAYS_INSIDE -> true;
+            case STABLE -> !Double.isNaN(maxEnergyRise);
+            case METRIC -> of != null && (of.equals("max") || of.equals("min") || of.equals("maxAbs") || of.equals("maxDrift"));
+            default -> false;
+        };
+    }
+
     /** A short human description, used in reports when the scene gives no name. */
     public String describe() {
         if (name != null) {

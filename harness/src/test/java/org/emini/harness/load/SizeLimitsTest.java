@@ -132,6 +132,24 @@ class SizeLimitsTest {
         assertEquals("$.run.record", p.path());
     }
 
+    /** Sampled once a minute the trace is small, but the bound on every member's lowest point is judged every tick. */
+    @Test
+    void extremesJudgedEveryTickCountInTheTracesLimit() {
+        String[] scene = {
+            "shapes: {b: {type: circle, radius: 1}}",
+            "generators:",
+            "  - {type: row, name: r, shape: b, start: [0, 0], count: 1000, spacing: [3, 0]}",
+            "run:",
+            "  duration: 600",
+            "  record: {every: 60, bodies: none}",
+            "  expect: [{metric: 'body.r[*].y', of: OF, atMost: 1000}]"};
+        Problem p = only(Scenes.load("extremes.yaml", String.join("\n", scene).replace("OF", "max")));
+        assertEquals("$.run.expect", p.path());
+        assertTrue(p.message().contains("judged on every tick"), p.message());
+        // Read at the samples alone (the final value) the same scene is within the limits.
+        assertTrue(Scenes.load("extremes.yaml", String.join("\n", scene).replace("OF", "final")).problems().isEmpty());
+    }
+
     @Test
     void particlePoolsHaveALimit() {
         List<String> lines = new ArrayList<>(List.of("particles:"));
