@@ -319,7 +319,9 @@ public final class Joint extends TwoBodyConstraint {
         float k11 = m + iA * rAy * rAy + iB * rBy * rBy;
         float k12 = -iA * rAy * rAx - iB * rBy * rBx;
         float k22 = m + iA * rAx * rAx + iB * rBx * rBx;
-        float det = k11 * k22 - k12 * k12;
+        // k11·k22 − k12² as a sum of non-negative terms (see solveWeld): long arms on light bodies cancel it.
+        float cross = rAx * rBy - rAy * rBx;
+        float det = m * (m + iA * (rAx * rAx + rAy * rAy) + iB * (rBx * rBx + rBy * rBy)) + iA * iB * cross * cross;
         if (det > 0f) {
             float inv = 1f / det;
             float px = -massScale * inv * (k22 * cx - k12 * cy) - impulseScale * accX;
@@ -355,17 +357,24 @@ public final class Joint extends TwoBodyConstraint {
         float k22 = m + iA * rAx * rAx + iB * rBx * rBx;
         float k23 = iA * rAx + iB * rBx;
         float k33 = iA + iB;
-        // Cofactors of the symmetric K; det = k11·c11 + k12·c12 + k13·c13.
-        float c11 = k22 * k33 - k23 * k23;
-        float c12 = k13 * k23 - k12 * k33;
-        float c13 = k12 * k23 - k13 * k22;
-        float det = k11 * c11 + k12 * c12 + k13 * c13;
+        // Cofactors and determinant of K in closed form, as sums of non-negative terms: formed from K's
+        // entries they cancel. A 4 px circle welded to a static body by a diagonal 330 px arm has
+        // entries near 3,500 and det 0.006: the entries' products lost it to round-off, and the
+        // solve flung the circle at 3·10⁵ px/s in its first tick (world fuzzer, seed 2 passive:17).
+        float ax = rAx - rBx;
+        float ay = rAy - rBy;
+        float cross = rAx * rBy - rAy * rBx;
+        float ii = iA * iB;
+        float c11 = m * k33 + ii * ax * ax;
+        float c22 = m * k33 + ii * ay * ay;
+        float c12 = ii * ax * ay;
+        float c13 = m * (iA * rAy + iB * rBy) + ii * ax * cross;
+        float c23 = ii * ay * cross - m * (iA * rAx + iB * rBx);
+        float c33 = m * (m + iA * (rAx * rAx + rAy * rAy) + iB * (rBx * rBx + rBy * rBy)) + ii * cross * cross;
+        float det = m * (m * k33 + ii * (ax * ax + ay * ay));
         if (!(det > 0f) || !EMath.isFinite(det)) {
             return -1f;
         }
-        float c22 = k11 * k33 - k13 * k13;
-        float c23 = k12 * k13 - k11 * k23;
-        float c33 = k11 * k22 - k12 * k12;
         float cx = relativeVelocityX(step);
         float cy = relativeVelocityY(step);
         float cw = step.getAngularVelocity(ib) - step.getAngularVelocity(ia);
