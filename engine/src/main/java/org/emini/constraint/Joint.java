@@ -319,9 +319,7 @@ public final class Joint extends TwoBodyConstraint {
         float k11 = m + iA * rAy * rAy + iB * rBy * rBy;
         float k12 = -iA * rAy * rAx - iB * rBy * rBx;
         float k22 = m + iA * rAx * rAx + iB * rBx * rBx;
-        // k11·k22 − k12² as a sum of non-negative terms (see solveWeld): long arms on light bodies cancel it.
-        float cross = rAx * rBy - rAy * rBx;
-        float det = m * (m + iA * (rAx * rAx + rAy * rAy) + iB * (rBx * rBx + rBy * rBy)) + iA * iB * cross * cross;
+        float det = k11 * k22 - k12 * k12;
         if (det > 0f) {
             float inv = 1f / det;
             float px = -massScale * inv * (k22 * cx - k12 * cy) - impulseScale * accX;
