@@ -21,10 +21,13 @@ import org.emini.math.EMath;
  * original's meaning on a y-down screen: a left-faced segment stops bodies on the left-hand side of
  * its direction start → end (where (end − start) × (p − start) &lt; 0, a × b = a.x·b.y − a.y·b.x)
  * and lets bodies on the right-hand side pass; a right-faced one the reverse; {@link #FACE_NONE}
- * stops bodies from both sides. Which side a body is on is decided by its position (its centre of
- * mass; a body exactly on the line is blocked, as in the original), so a body coming from the open
- * side passes through and is never pushed out on the blocking side; a multi-shape body passes or
- * is stopped as a whole. Segments that share an end point (within
+ * stops bodies from both sides. Which side a body is on is decided by one point of it: for a faced
+ * segment its position (its shapes' origin, as in the original engine's one-way platforms), for an
+ * unfaced one its centre of mass; a body exactly on the line is blocked, as in the original. So a
+ * body coming from the open side passes through and is never pushed out on the blocking side; a
+ * multi-shape body passes or is stopped as a whole. A body whose origin lies outside its shapes (an
+ * off-centre multi-shape) is let through a faced segment once its origin crosses the line, even while
+ * its shapes rest on the blocking side. Segments that share an end point (within
  * {@link #JOIN_TOLERANCE}) form a smooth chain: bodies slide across the joints without catching.
  *
  * <p>As in the original, segments are stored with start x ≤ end x: a segment given the other way
