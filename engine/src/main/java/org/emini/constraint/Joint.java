@@ -356,7 +356,7 @@ public final class Joint extends TwoBodyConstraint {
         float k23 = iA * rAx + iB * rBx;
         float k33 = iA + iB;
         // Cofactors and determinant of K in closed form, as sums of non-negative terms: formed from K's
-        // entries they cancel. A 4 px circle welded to a static body by a diagonal 330 px arm has
+        // entries they cancel. A 4 px circle welded to a static body by a diagonal 326 px arm has
         // entries near 3,500 and det 0.006: the entries' products lost it to round-off, and the
         // solve flung the circle at 3·10⁵ px/s in its first tick (world fuzzer, seed 2 passive:17).
         float ax = rAx - rBx;

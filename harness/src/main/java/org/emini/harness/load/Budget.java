@@ -76,21 +76,17 @@ final class Budget {
         return out;
     }
 
-    /** Bodies whose extremes an expectation reads, a group counted by its members. */
+    /** Bodies whose extremes the expectations read ({@link ExpectationSpec#extremeChannels()}), a group by its members. */
     private static int judgedEveryTick(Scenario s) {
         int n = 0;
         for (ExpectationSpec e : s.run().expect()) {
-            if (!e.readsExtremes()) {
-                continue;
+            for (String c : e.extremeChannels()) {
+                String[] bc = Channels.bodyChannel(c);
+                if (bc == null) {
+                    continue;
+                }
+                n += Channels.isGroup(bc[0]) ? (int) s.bodies().stream().filter(b -> Channels.matches(bc[0], b.name())).count() : 1;
             }
-            String[] bc = e.channel() != null ? Channels.bodyChannel(e.channel()) : null;
-            String body = bc != null ? bc[0] : e.body();
-            if (body != null && Channels.isGroup(body)) {
-                n += (int) s.bodies().stream().filter(b -> Channels.matches(body, b.name())).count();
-            } else if (body != null) {
-                n++;
-            }
-            n += (e.minus() != null ? 1 : 0) + (e.relativeTo() != null ? 1 : 0);
         }
         return n;
     }

@@ -10,7 +10,6 @@ import org.emini.harness.build.UnsupportedElementException;
 import org.emini.harness.metrics.Metric;
 import org.emini.harness.metrics.Metrics;
 import org.emini.harness.scenario.Channels;
-import org.emini.harness.scenario.ExpectationSpec;
 import org.emini.harness.scenario.MetricSpec;
 import org.emini.harness.scenario.Scenario;
 
@@ -46,19 +45,7 @@ final class EveryTick {
             return null;
         }
         Set<String> channels = new LinkedHashSet<>();
-        for (ExpectationSpec e : scenario.run().expect()) {
-            if (e.readsExtremes()) {
-                channels.add(e.channel());
-                channels.add(e.minus());
-                channels.add(e.relativeTo() != null ? e.relativeTo().channel() : null);
-                channels.add(e.body() != null ? Channels.body(e.body(), "x") : null);
-                if (e.kind() == ExpectationSpec.Kind.STABLE) {
-                    channels.add("energy.total");
-                    channels.add("stability.maxSpeed");
-                }
-            }
-        }
-        channels.remove(null);
+        scenario.run().expect().forEach(e -> channels.addAll(e.extremeChannels()));
         if (channels.isEmpty()) {
             return null;
         }
@@ -86,11 +73,6 @@ final class EveryTick {
         ordered.retainAll(names);
         Body[] bodies = ordered.stream().map(built::body).toArray(Body[]::new);
         return new EveryTick(new Trace(scenario.world().timestep(), ordered, metricChannels), bodies, metrics);
-    }
-
-    /** Whether this record judges an expectation ({@link ExpectationSpec#readsExtremes()}). */
-    boolean judges(ExpectationSpec e) {
-        return e.readsExtremes();
     }
 
     /** After every tick (and once before the first): the metrics' monitors, then a sample. */

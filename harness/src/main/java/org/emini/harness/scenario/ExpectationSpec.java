@@ -85,6 +85,30 @@ public record ExpectationSpec(Kind kind, String channel, String of, double at, b
         };
     }
 
+    /**
+     * The channels the harness records on every tick to judge this expectation ({@link #readsExtremes()}):
+     * its own, the one it is measured against ({@code minus}, {@code relativeTo}), its body's position
+     * ({@code staysInside}), the energy and speeds of {@code stable}. Empty when it reads no extreme. A
+     * body channel may name a group ({@code body.box[*].x}).
+     */
+    public java.util.List<String> extremeChannels() {
+        if (!readsExtremes()) {
+            return java.util.List.of();
+        }
+        java.util.List<String> out = new java.util.ArrayList<>();
+        for (String c : new String[] {channel, minus, relativeTo != null ? relativeTo.channel() : null,
+            body != null ? Channels.body(body, "x") : null}) {
+            if (c != null) {
+                out.add(c);
+            }
+        }
+        if (kind == Kind.STABLE) {
+            out.add("energy.total");
+            out.add("stability.maxSpeed");
+        }
+        return out;
+    }
+
     /** A short human description, used in reports when the scene gives no name. */
     public String describe() {
         if (name != null) {

@@ -18,11 +18,12 @@ import org.emini.world.World;
  * which gains m·g·depth of potential energy: the 1 px term. 2% of the largest kinetic energy so far
  * covers rounding in exchanges between kinetic and potential energy at impacts (a pendulum's or a
  * sliding body's energy is conserved only to the integrator's error). 10⁻⁵·|E(0)| is float noise of
- * positions that far from the origin. The last term is every body creeping at a thousandth of a pixel a
- * second, invisible: without gravity and at rest a world's whole budget was otherwise its kinetic energy,
- * and a joint made where both bodies were, correcting its anchors' rounding (10⁻⁹ px), set a body moving at
- * 8·10⁻⁸ px/s, 50 times that budget (seed 3, passive:177). A launched body (dynamic iterations giving a landing box
- * (N−1)× its impact speed) gains (N−1)² times its impact energy, far beyond this.
+ * positions that far from the origin. The last term is every body creeping at a thousandth of a pixel
+ * a second, invisible: without gravity and at rest a world's whole budget was otherwise its kinetic
+ * energy, and a joint made where both bodies were, correcting its anchors' rounding, set a
+ * body moving at 8·10⁻⁸ px/s, 50 times that budget (seed 3, passive:177). A launched body (dynamic
+ * iterations giving a landing box (N−1)× its impact speed) gains (N−1)² times its impact energy, far
+ * beyond this.
  */
 final class EnergyCheck implements TickCheck {
     private double initial;
