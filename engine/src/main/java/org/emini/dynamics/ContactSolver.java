@@ -84,7 +84,11 @@ final class ContactSolver {
     private float[] f = new float[16 * CS];
     private int[] n = new int[16 * CI];
     private Contact[] contacts = new Contact[16];
+    // Per slot: its contact's index in the narrowphase's list.
+    private int[] contactOf = new int[16];
     private int count;
+    // The contacts of the narrowphase's list this tick's slots were prepared from.
+    private int preparedCount;
 
     private final ElasticImpacts impacts = new ElasticImpacts();
 
@@ -107,6 +111,13 @@ final class ContactSolver {
     private int[] slotOf = new int[16];
     // The colouring's input last tick: when this tick's is the same, so are slotOf and colourStart.
     private final ContactGraphKey graph = new ContactGraphKey();
+    // The small islands' slots (after the colours') and whether this colouring laid them out.
+    private final SolveIslands islands = new SolveIslands();
+    private boolean islandSlots;
+    // Whether the colouring was made for threads, and colourings left before islands are looked for again.
+    private boolean colouredForThreads;
+    private int islandsSkipped;
+    private static final int ISLAND_SKIPS = 15;
     /** False: colour every tick afresh (tests compare the two). */
     boolean keepColouring = true;
     /** Colourings computed, for tests. */
@@ -172,6 +183,16 @@ final class ContactSolver {
             prepareRange(part, from, to);
         }
     };
+    // The task that islandRuns runs over each thread's run of small islands.
+    private WorkerPool.RangeTask runTask;
+    private final WorkerPool.RangeTask islandRuns = new WorkerPool.RangeTask() {
+        @Override
+        public void run(int part, int from, int to) {
+            for (int k = from; k < to; k++) {
+                runTask.run(part, islands.runStart(k), islands.runStart(k + 1));
+            }
+        }
+    };
     private final WorkerPool.RangeTask warmTask = new WorkerPool.RangeTask() {
         @Override
         public void run(int part, int from, int to) {
@@ -191,6 +212,8 @@ final class ContactSolver {
      */
     void setPool(WorkerPool workers) {
         pool = workers;
+        // The island runs were split for the old thread count: colour afresh.
+        graph.forget();
         int size = PAD * (workers == null ? 1 : workers.getThreadCount());
         if (workerChange.length < size) {
             workerChange = new float[size];
@@ -206,6 +229,7 @@ final class ContactSolver {
     void prepare(Contact[] all, boolean[] noPoints, int contactCount, SolverBodies bodies, Softness soft, Softness staticSoft,
             float maxCondition, float impulseStep) {
         ensure(contactCount);
+        preparedCount = contactCount;
         colour(all, noPoints, contactCount, bodies);
         hotContacts.slotsChanged();
         prepareContacts = all;
@@ -259,6 +283,7 @@ final class ContactSolver {
             float bx = c.bodyB == null ? ax : (ib != 0 ? st[ob + X] : b.x);
             float by = c.bodyB == null ? ay : (ib != 0 ? st[ob + Y] : b.y);
             contacts[k] = c;
+            contactOf[k] = ci;
             int fo = k * CS;
             int io = k * CI;
             n[io + BODY_A] = ia;
@@ -438,10 +463,18 @@ final class ContactSolver {
      */
     private void colour(Contact[] all, boolean[] noPoints, int contactCount, SolverBodies bodies) {
         graph.read(all, noPoints, contactCount);
-        if (keepColouring && graph.matches(contactCount, bodies)) {
+        // Threads that share the passes solve small islands whole (SolveIslands); the same results.
+        boolean threads = pool != null && !pool.isAlone();
+        if (keepColouring && graph.matches(contactCount, bodies) && threads == colouredForThreads) {
             return;
         }
         colourings++;
+        colouredForThreads = threads;
+        islandSlots = false;
+        boolean byIsland = threads && islandsSkipped == 0;
+        if (islandsSkipped > 0) {
+            islandsSkipped--;
+        }
         graph.begin(contactCount, bodies.count);
         float[] st = bodies.state;
         int bodyCount = bodies.count;
@@ -457,6 +490,9 @@ final class ContactSolver {
             used[i] = 0L;
         }
         levels(contactCount, bodies);
+        if (byIsland) {
+            islands.begin(bodyCount, contactCount);
+        }
         int[] depth = level;
         int[] sizes = colourStart;
         for (int c = 0; c <= COLOURS + 1; c++) {
@@ -502,6 +538,23 @@ final class ContactSolver {
             }
             colourOf[ci] = colour;
             sizes[colour + 1]++;
+            if (byIsland) {
+                islands.contact(ci, movesA ? ia : ib, movesA && movesB ? ib : -1);
+            }
+        }
+        if (byIsland) {
+            int slots = islands.layout(colourOf, contactCount, colourStart, COLOURS);
+            int runs = slots < 0 ? 0 : islands.split(pool.getThreadCount());
+            if (runs < 2 || slots - islands.smallStart < runs * minPart) {
+                // Too few small islands to share: look again only some colourings later (the
+                // islands cost a tumbling pile, coloured every tick, 4% of its tick on two threads).
+                islandsSkipped = ISLAND_SKIPS;
+            }
+            if (slots >= 0) {
+                count = slots;
+                islandSlots = true;
+                return;
+            }
         }
         // Sizes to starts: colour c holds slots colourStart[c] to colourStart[c + 1] − 1.
         for (int c = 1; c <= COLOURS + 1; c++) {
@@ -1072,7 +1125,17 @@ final class ContactSolver {
                 p.run(task, from, to, minPart);
             }
         }
-        task.run(0, colourStart[COLOURS], count);
+        int small = colourStart[COLOURS + 1];
+        task.run(0, colourStart[COLOURS], small);
+        // The small islands: a run of whole islands for each thread, one wait for all of them.
+        int runs = islandSlots ? islands.parts() : 0;
+        if (runs > 1 && count - small >= runs * minPart) {
+            runTask = task;
+            p.run(islandRuns, 0, runs, 1);
+            runTask = null;
+        } else if (small < count) {
+            task.run(0, small, count);
+        }
     }
 
     /** A hot pass over the selected slots in slot order, by the calling thread (a few contacts each). */
@@ -1087,6 +1150,11 @@ final class ContactSolver {
             passRange(0, k, end);
             k = hotContacts.next(end, count);
         }
+    }
+
+    /** The runs of small islands the threads share in a pass (0: laid out by colour alone), for tests. */
+    int islandRuns() {
+        return islandSlots ? islands.parts() : 0;
     }
 
     private int workerCount() {
@@ -1141,7 +1209,7 @@ final class ContactSolver {
 
     /** The substep's elastic impacts, before its warm start ({@link ElasticImpacts}). */
     void impacts(SolverBodies bodies, float h, float threshold, float slop, StepData step) {
-        impacts.run(f, n, contacts, bodies, h, threshold, slop, step);
+        impacts.run(f, n, contacts, contactOf, bodies, h, threshold, slop, step);
     }
 
     /**
@@ -1151,7 +1219,12 @@ final class ContactSolver {
      */
     void storeImpulses(StepData step, float hitSpeed) {
         if (hitSpeed < Float.POSITIVE_INFINITY) {
-            for (int k = 0; k < count; k++) {
+            // In the contacts' order, not the slots' (which depends on how threads share the solve).
+            for (int ci = 0; ci < preparedCount; ci++) {
+                int k = slotOf[ci];
+                if (k < 0) {
+                    continue;
+                }
                 int fo = k * CS;
                 int pc = n[k * CI + POINTS];
                 float fastest = hitSpeed;
@@ -1198,6 +1271,7 @@ final class ContactSolver {
         if (contacts.length < capacity) {
             int c = Math.max(capacity, contacts.length * 2);
             contacts = new Contact[c];
+            contactOf = new int[c];
             f = new float[c * CS];
             n = new int[c * CI];
         }

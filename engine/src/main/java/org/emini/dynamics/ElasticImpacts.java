@@ -1,5 +1,8 @@
 package org.emini.dynamics;
 
+import java.util.Arrays;
+import org.emini.internal.HeapSort;
+
 import static org.emini.dynamics.ContactSolver.BASE_SEP;
 import static org.emini.dynamics.ContactSolver.BLOCK;
 import static org.emini.dynamics.ContactSolver.BODY_A;
@@ -51,6 +54,8 @@ final class ElasticImpacts {
     // Slots of the contacts with elasticity, in slot order: the only ones the sweeps visit.
     private int[] elastic = new int[16];
     private int count;
+    // The contacts a sweep of this substep first touched: contact index (high half) and slot.
+    private long[] touched = new long[16];
 
     /** Keeps the slots, of the first {@code slots}, whose contact has elasticity. */
     void collect(float[] f, int slots) {
@@ -80,27 +85,45 @@ final class ElasticImpacts {
      * their warm-started impulse and are left to the solve, as are the points still approaching
      * after the last sweep (a ball pinched between two walls).
      */
-    void run(float[] f, int[] n, Contact[] contacts, SolverBodies bodies, float h, float threshold, float slop,
-            StepData step) {
+    void run(float[] f, int[] n, Contact[] contacts, int[] contactOf, SolverBodies bodies, float h, float threshold,
+            float slop, StepData step) {
         if (count == 0) {
             return;
         }
-        float[] st = bodies.state;
+        int began = 0;
         for (int sweep = 0; sweep < SWEEPS; sweep++) {
             boolean forward = (sweep & 1) == 0;
             boolean bounced = false;
             for (int i = 0; i < count; i++) {
-                bounced |= impact(f, n, contacts, bodies, elastic[forward ? i : count - 1 - i], h, threshold, slop, step);
+                int k = elastic[forward ? i : count - 1 - i];
+                if (impact(f, n, bodies, k, h, threshold, slop)) {
+                    bounced = true;
+                    // A bounce is a touch, although the points turn back just short of closing.
+                    Contact c = contacts[k];
+                    if (!c.touching) {
+                        c.touching = true;
+                        if (began == touched.length) {
+                            touched = Arrays.copyOf(touched, 2 * began);
+                        }
+                        touched[began++] = (long) contactOf[k] << 32 | k;
+                    }
+                }
             }
             if (!bounced) {
-                return;
+                break;
             }
+        }
+        // Listed in the contacts' order, as the narrowphase lists its own, not in slot order: the
+        // slots' order depends on how threads share the solve (SolveIslands).
+        HeapSort.sort(touched, began);
+        for (int i = 0; i < began; i++) {
+            step.contactBegan(contacts[(int) touched[i]]);
         }
     }
 
     /** One contact's impact (see {@link #run}); true when a point bounced. */
-    private static boolean impact(float[] f, int[] n, Contact[] contacts, SolverBodies bodies, int k, float h,
-            float threshold, float slop, StepData step) {
+    private static boolean impact(float[] f, int[] n, SolverBodies bodies, int k, float h, float threshold,
+            float slop) {
         float[] st = bodies.state;
         int fo = k * CS;
         int io = k * CI;
@@ -324,12 +347,6 @@ final class ElasticImpacts {
             st[ob + VX] = vbx;
             st[ob + VY] = vby;
             st[ob + W] = wb;
-        }
-        // A bounce is a touch, although the points turn back just short of closing.
-        Contact c = contacts[k];
-        if (!c.touching) {
-            c.touching = true;
-            step.contactBegan(c);
         }
         return true;
     }

@@ -1,6 +1,7 @@
 package org.emini.dynamics;
 
 import java.util.Arrays;
+import org.emini.internal.UnionFind;
 
 /**
  * Sleeping: bodies that have rested long enough stop being simulated, island by island, and wake
@@ -16,7 +17,7 @@ import java.util.Arrays;
  */
 final class Sleep {
     private boolean enabled;
-    private int[] parent = new int[16];
+    private final UnionFind islands = new UnionFind();
     private boolean[] restless = new boolean[16];
     // The last body linked into each resting island's ring, by root.
     private Body[] ringTail = new Body[16];
@@ -98,18 +99,16 @@ final class Sleep {
      */
     void afterSolve(Body[] simulated, int count, Contact[] active, int activeCount, Constraint[] constraints,
             int constraintCount, SolverSettings settings, float dt) {
-        if (parent.length < count) {
-            int size = Math.max(count, 2 * parent.length);
-            parent = new int[size];
-            restless = new boolean[size];
+        if (restless.length < count) {
+            restless = new boolean[Math.max(count, 2 * restless.length)];
         }
+        islands.reset(count);
         float linear = settings.getSleepLinearTolerance();
         float angular = settings.getSleepAngularTolerance();
         float timeToSleep = settings.getTimeToSleep();
         boolean anyReady = false;
         for (int i = 0; i < count; i++) {
             Body b = simulated[i];
-            parent[i] = i;
             restless[i] = false;
             if (!b.sleepAllowed || b.vx * b.vx + b.vy * b.vy > linear * linear || b.w * b.w > angular * angular) {
                 b.sleepTime = 0f;
@@ -147,7 +146,7 @@ final class Sleep {
         // An island is restless if any body in it is.
         for (int i = 0; i < count; i++) {
             if (simulated[i].sleepTime < timeToSleep || restless[i]) {
-                restless[find(i)] = true;
+                restless[islands.find(i)] = true;
             }
         }
         // Link each resting island's bodies into a ring, in world order, through its root.
@@ -155,7 +154,7 @@ final class Sleep {
             ringTail = new Body[Math.max(count, 2 * ringTail.length)];
         }
         for (int i = 0; i < count; i++) {
-            int root = find(i);
+            int root = islands.find(i);
             if (restless[root]) {
                 continue;
             }
@@ -184,32 +183,11 @@ final class Sleep {
             // A body outside the simulation (static, frozen) joins nothing.
             return;
         }
-        int ra = find(ia);
-        int rb = find(ib);
-        if (ra != rb) {
-            // The smaller index roots, so the rings come out the same whatever the order.
-            if (ra < rb) {
-                parent[rb] = ra;
-            } else {
-                parent[ra] = rb;
-            }
-        }
+        // The smaller index roots, so the rings come out the same whatever the order.
+        islands.union(ia, ib);
     }
 
     private static int indexOf(Body b) {
         return b.awake ? b.stepIndex : -1;
-    }
-
-    private int find(int i) {
-        int r = i;
-        while (parent[r] != r) {
-            r = parent[r];
-        }
-        while (parent[i] != r) {
-            int next = parent[i];
-            parent[i] = r;
-            i = next;
-        }
-        return r;
     }
 }

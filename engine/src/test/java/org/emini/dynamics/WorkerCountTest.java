@@ -150,6 +150,67 @@ class WorkerCountTest {
         assertEquals(one, pile(4));
     }
 
+    /**
+     * Twelve separate piles of boxes, each with elastic balls dropped on it: small islands, which the
+     * threads solve whole (SolveIslands), and the wide one across the ground at the end joins four of
+     * them into a large one, solved colour by colour. A hash of the bodies and of every begin and hit
+     * event, in the order the step data lists them.
+     */
+    private static long islands(int workers, int[] runs) {
+        World world = threaded(workers);
+        try {
+            Scenes.ground(world, 0f, 6000f);
+            Shape box = Shape.createRectangle(20f, 20f);
+            Shape ball = Shape.createCircle(8f);
+            ball.setElasticity(0.8f);
+            for (int pile = 0; pile < 12; pile++) {
+                float x = -2600f + pile * 400f;
+                for (int row = 0; row < 6; row++) {
+                    for (int j = 0; j < 6 - row; j++) {
+                        world.addBody(new Body(x + (j - 0.5f * (5 - row)) * 21f, -10f - row * 20f, box, true));
+                    }
+                }
+            }
+            world.setHitEventThreshold(10f);
+            long h = 0;
+            for (int t = 0; t < 300; t++) {
+                if (t % 25 == 0) {
+                    for (int pile = 0; pile < 12; pile++) {
+                        world.addBody(new Body(-2600f + pile * 400f + (t % 50 == 0 ? -9f : 9f), -300f, ball, true));
+                    }
+                }
+                if (t == 200) {
+                    // A plank across four piles: one island of them.
+                    world.addBody(new Body(-2000f, -400f, Shape.createRectangle(1300f, 10f), true));
+                }
+                world.tick();
+                StepData d = ((Simulation) world).getStepData();
+                for (int i = 0; i < d.getBeginCount(); i++) {
+                    Contact c = d.getBeginContact(i);
+                    h = 31 * h + c.getBodyA().getId() * 1000L + c.getBodyB().getId();
+                }
+                for (int i = 0; i < d.getHitCount(); i++) {
+                    h = 31 * h + Float.floatToIntBits(d.getHitSpeed(i)) + Float.floatToIntBits(d.getHitX(i));
+                }
+                runs[0] = Math.max(runs[0], ((Simulation) world).solver.contactSolver().islandRuns());
+            }
+            return 31 * h + EverythingScene.bodyHash(world);
+        } finally {
+            world.setWorkerCount(1);
+        }
+    }
+
+    @Test
+    void separatePilesSolvedIslandByIslandAreTheSameForAnyThreadCount() {
+        int[] runs = new int[1];
+        long one = islands(1, runs);
+        assertEquals(0, runs[0], "one thread: the colours' layout");
+        assertEquals(one, islands(2, runs), "2 threads");
+        assertEquals(2, runs[0], "2 threads: a run of islands each");
+        assertEquals(one, islands(3, runs), "3 threads");
+        assertEquals(3, runs[0], "3 threads: a run of islands each");
+    }
+
     @Test
     void aWorldOfFewBodiesTicksOnTheCallingThreadAlone() {
         World world = new World();
