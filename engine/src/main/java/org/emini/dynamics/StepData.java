@@ -194,7 +194,9 @@ public final class StepData {
     }
 
     /**
-     * A contact that began touching, in the order found. Valid until the next tick.
+     * A contact that began touching, in the order found: those the narrowphase found, in the order it
+     * keeps its contacts, then, substep by substep, those a bounce made touch, each substep's in that
+     * order too; the same for any thread count. Valid until the next tick.
      *
      * @param index 0 to {@link #getBeginCount()} − 1
      * @return the contact
@@ -247,7 +249,8 @@ public final class StepData {
     }
 
     /**
-     * A contact that was hit, in the solver's order. Valid until the next tick.
+     * A contact that was hit, in the order the narrowphase keeps its contacts (as the contacts that
+     * began touching), the same for any thread count. Valid until the next tick.
      *
      * @param index 0 to {@link #getHitCount()} − 1
      * @return the contact
