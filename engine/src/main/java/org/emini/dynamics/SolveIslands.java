@@ -21,7 +21,7 @@ final class SolveIslands {
 
     // Body slots joined by the contacts between moving bodies.
     private final UnionFind joined = new UnionFind();
-    // Per root body: its island's contacts, then its small island's index + 1 (0: large).
+    // Per root body: its island's contacts, and its small island's index + 1 (0: none given, or large).
     private int[] size = new int[16];
     private int[] index = new int[16];
     // Per contact: a moving body of it, then its small island (−1: large).
