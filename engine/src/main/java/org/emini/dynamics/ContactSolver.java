@@ -1104,9 +1104,10 @@ final class ContactSolver {
     }
 
     /**
-     * Runs a task over every slot, colour by colour: with a worker pool each colour large enough is
-     * split among the threads (its contacts share no moving body, so the split changes nothing), then
-     * the overflow group on this thread. Without one, all slots in order, which is the same order.
+     * Runs a task over every slot: with a worker pool, the large islands' slots colour by colour, each
+     * colour large enough split among the threads (its contacts share no moving body, so the split
+     * changes nothing), their overflow group on this thread, then the small islands' runs, one a thread
+     * ({@link SolveIslands}). Without one, all slots in order, which gives the same results.
      */
     private void forColours(WorkerPool.RangeTask task) {
         WorkerPool p = pool;
