@@ -154,10 +154,12 @@ class WorkerCountTest {
      * Twelve separate piles of boxes, each with elastic balls dropped on it: small islands, which the
      * threads solve whole (SolveIslands), and the wide one across the ground at the end joins four of
      * them into a large one, solved colour by colour. A hash of the bodies and of every begin and hit
-     * event, in the order the step data lists them.
+     * event, in the order the step data lists them. With sleeping on, the piles fall asleep after the
+     * drops and the plank wakes four of them.
      */
-    private static long islands(int workers, int[] runs) {
+    private static long islands(int workers, int[] runs, boolean sleeping) {
         World world = threaded(workers);
+        ((Simulation) world).setSleepingEnabled(sleeping);
         try {
             Scenes.ground(world, 0f, 6000f);
             Shape box = Shape.createRectangle(20f, 20f);
@@ -173,17 +175,22 @@ class WorkerCountTest {
             }
             world.setHitEventThreshold(10f);
             long h = 0;
-            for (int t = 0; t < 300; t++) {
-                if (t % 25 == 0) {
+            for (int t = 0; t < 420; t++) {
+                if (t % 25 == 0 && t < 150) {
                     for (int pile = 0; pile < 12; pile++) {
                         world.addBody(new Body(-2600f + pile * 400f + (t % 50 == 0 ? -9f : 9f), -300f, ball, true));
                     }
                 }
-                if (t == 200) {
+                if (t == 300) {
                     // A plank across four piles: one island of them.
                     world.addBody(new Body(-2000f, -400f, Shape.createRectangle(1300f, 10f), true));
                 }
                 world.tick();
+                int asleep = 0;
+                for (Body b : world.getBodies()) {
+                    asleep += b.isSleeping() ? 1 : 0;
+                }
+                runs[1] = Math.max(runs[1], asleep);
                 StepData d = ((Simulation) world).getStepData();
                 for (int i = 0; i < d.getBeginCount(); i++) {
                     Contact c = d.getBeginContact(i);
@@ -202,13 +209,16 @@ class WorkerCountTest {
 
     @Test
     void separatePilesSolvedIslandByIslandAreTheSameForAnyThreadCount() {
-        int[] runs = new int[1];
-        long one = islands(1, runs);
-        assertEquals(0, runs[0], "one thread: the colours' layout");
-        assertEquals(one, islands(2, runs), "2 threads");
-        assertEquals(2, runs[0], "2 threads: a run of islands each");
-        assertEquals(one, islands(3, runs), "3 threads");
-        assertEquals(3, runs[0], "3 threads: a run of islands each");
+        for (boolean sleeping : new boolean[] {false, true}) {
+            int[] runs = new int[2];
+            long one = islands(1, runs, sleeping);
+            assertEquals(sleeping, runs[1] > 100, "bodies asleep at once: " + runs[1]);
+            assertEquals(0, runs[0], "one thread: the colours' layout");
+            assertEquals(one, islands(2, runs, sleeping), "2 threads, sleeping " + sleeping);
+            assertEquals(2, runs[0], "2 threads: a run of islands each");
+            assertEquals(one, islands(3, runs, sleeping), "3 threads, sleeping " + sleeping);
+            assertEquals(3, runs[0], "3 threads: a run of islands each");
+        }
     }
 
     @Test
