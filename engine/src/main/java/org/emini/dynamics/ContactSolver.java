@@ -111,9 +111,8 @@ final class ContactSolver {
     private int[] slotOf = new int[16];
     // The colouring's input last tick: when this tick's is the same, so are slotOf and colourStart.
     private final ContactGraphKey graph = new ContactGraphKey();
-    // The small islands' slots (after the colours') and whether this colouring laid them out.
+    // The small islands' slots (after the colours') and their runs, when this colouring laid them out.
     private final SolveIslands islands = new SolveIslands();
-    private boolean islandSlots;
     // Whether the colouring was made for threads, and colourings left before islands are looked for again.
     private boolean colouredForThreads;
     private int islandsSkipped;
@@ -470,7 +469,7 @@ final class ContactSolver {
         }
         colourings++;
         colouredForThreads = threads;
-        islandSlots = false;
+        islands.clear();
         boolean byIsland = threads && islandsSkipped == 0;
         if (islandsSkipped > 0) {
             islandsSkipped--;
@@ -544,15 +543,13 @@ final class ContactSolver {
         }
         if (byIsland) {
             int slots = islands.layout(colourOf, contactCount, colourStart, COLOURS);
-            int runs = slots < 0 ? 0 : islands.split(pool.getThreadCount());
-            if (runs < 2 || slots - islands.smallStart < runs * minPart) {
+            if (islands.split(pool.getThreadCount(), minPart) == 0) {
                 // Too few small islands to share: look again only some colourings later (the
                 // islands cost a tumbling pile, coloured every tick, 4% of its tick on two threads).
                 islandsSkipped = ISLAND_SKIPS;
             }
             if (slots >= 0) {
                 count = slots;
-                islandSlots = true;
                 return;
             }
         }
@@ -1129,8 +1126,8 @@ final class ContactSolver {
         int small = colourStart[COLOURS + 1];
         task.run(0, colourStart[COLOURS], small);
         // The small islands: a run of whole islands for each thread, one wait for all of them.
-        int runs = islandSlots ? islands.parts() : 0;
-        if (runs > 1 && count - small >= runs * minPart) {
+        int runs = islands.parts();
+        if (runs > 0) {
             runTask = task;
             p.run(islandRuns, 0, runs, 1);
             runTask = null;
@@ -1155,7 +1152,7 @@ final class ContactSolver {
 
     /** The runs of small islands the threads share in a pass (0: laid out by colour alone), for tests. */
     int islandRuns() {
-        return islandSlots ? islands.parts() : 0;
+        return islands.parts();
     }
 
     private int workerCount() {

@@ -36,7 +36,7 @@ final class SolveIslands {
     private int[] byColour = new int[2];
     /** Small islands of the last layout. */
     int islands;
-    /** The first slot of the small islands (the slot count when there are none). */
+    /** The first slot of the small islands, after a {@link #layout} that laid some out. */
     int smallStart;
     // Per part of a split pass: its first island; split[parts] = islands.
     private int[] split = new int[3];
@@ -107,7 +107,6 @@ final class SolveIslands {
         }
         parts = 0;
         if (islands == 0) {
-            smallStart = solved;
             return -1;
         }
         // Colour sizes to starts: of the large islands' contacts (colourStart), and of all (byColour).
@@ -158,20 +157,27 @@ final class SolveIslands {
         return solved;
     }
 
+    /** Forgets the last layout's runs: a colouring that does not lay out islands has none. */
+    void clear() {
+        islands = 0;
+        parts = 0;
+    }
+
     /**
      * Splits the small islands into at most {@code threads} runs of whole islands of about equal
-     * contact counts, and returns the runs' count (0 when there are no small islands).
+     * contact counts, and returns the runs' count: 0 when sharing them would not pay (fewer than two
+     * runs, or fewer than {@code minPart} contacts a run), and the small islands run on one thread.
      */
-    int split(int threads) {
-        if (islands == 0) {
+    int split(int threads, int minPart) {
+        int p = Math.min(threads, islands);
+        int total = islands == 0 ? 0 : islandStart[islands] - smallStart;
+        if (p < 2 || total < p * minPart) {
             parts = 0;
             return 0;
         }
-        int p = Math.min(threads, islands);
         if (split.length < p + 1) {
             split = new int[p + 1];
         }
-        int total = islandStart[islands] - smallStart;
         split[0] = 0;
         int island = 0;
         for (int k = 1; k < p; k++) {
@@ -190,7 +196,7 @@ final class SolveIslands {
         return p;
     }
 
-    /** The runs of the last {@link #split}. */
+    /** The runs of the last {@link #split} (0: none, the small islands, if any, run on one thread). */
     int parts() {
         return parts;
     }

@@ -50,7 +50,7 @@ class SolveIslandsProperties {
             // Every island large: the colour-major layout stands, untouched.
             assertEquals(0, islands.islands);
             assertEquals(java.util.Arrays.toString(colours), java.util.Arrays.toString(colourOf));
-            assertEquals(0, islands.split(threads));
+            assertEquals(0, islands.split(threads, 1));
             return;
         }
         assertTrue(islands.islands > 0);
@@ -97,8 +97,15 @@ class SolveIslandsProperties {
             }
         }
         // The split: runs of whole islands, from the small islands' start to the end, sharing no moving body.
-        int parts = islands.split(threads);
-        assertTrue(parts >= 1 && parts <= threads);
+        // Sharing pays only with minPart contacts a run: asked for more than there are, no runs.
+        assertEquals(0, islands.split(threads, count + 1));
+        int parts = islands.split(threads, 1);
+        if (threads < 2 || islands.islands < 2) {
+            // One run shares nothing: the small islands run on one thread.
+            assertEquals(0, parts);
+            return;
+        }
+        assertTrue(parts >= 2 && parts <= threads);
         assertEquals(islands.smallStart, islands.runStart(0));
         assertEquals(count, islands.runStart(parts));
         int[] runOf = new int[bodies];
