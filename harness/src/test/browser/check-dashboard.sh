@@ -5,7 +5,7 @@
 # moving (and, with EMINI_REQUIRE_ORACLE set, the oracle's points and maps present; with
 # EMINI_REQUIRE_BENCH set, the benchmark's table in the Speed section; with EMINI_REQUIRE_SLEEPING set,
 # sleeping bodies drawn in a replay and the run with sleeping on summarised; with EMINI_REQUIRE_NUDGED set, the
-# nudged run summarised; with EMINI_REQUIRE_DETAILS set,
+# nudged run summarised; with EMINI_REQUIRE_WORKERS set, the run at two worker threads summarised; with EMINI_REQUIRE_DETAILS set,
 # the comparison's summary table, a yellow bounded-energy cell and a landscape drawn). Installs Debian's
 # chromium first when /usr/bin/chromium is missing.
 #   harness/src/test/browser/check-dashboard.sh REPORTS [SCREENSHOT.png]
@@ -62,6 +62,11 @@ if [ -n "${EMINI_REQUIRE_NUDGED:-}" ]; then
     *'"nudgedSummaries":'[1-9]*) ;;
     *) echo "check-dashboard: FAILED: no summary of the nudged run" >&2; exit 1 ;;
   esac
+fi
+# With EMINI_REQUIRE_WORKERS set the reports hold a run at two worker threads (reports/workers/x2): the verdicts
+# must say how many of its scenes are bit-identical to the run as written.
+if [ -n "${EMINI_REQUIRE_WORKERS:-}" ] && [[ "$result" != *'"workersSummary":true'* ]]; then
+  echo "check-dashboard: FAILED: no summary of the run at two worker threads" >&2; exit 1
 fi
 # With EMINI_REQUIRE_DETAILS set (./emini test: the smoke reports hold a comparison, a stability map with a
 # bounded energy error and a scene with a landscape): the comparison's closer-to-the-truth table and

@@ -102,7 +102,7 @@ final class CompareCommand implements Callable<Integer> {
                     .start(valid, reports.resolve("traces").resolve(o), threads, o));
         }
         try (SceneBatch engine = new SceneBatch(loaded, threads,
-                new SceneBatch.Settings(engineTraces, true, true, Limits.SCENE_SECONDS, n -> { }))) {
+                new SceneBatch.Settings(engineTraces, true, true, Limits.SCENE_SECONDS, n -> { }, 1))) {
             Map<String, Map<Path, OracleScene>> said = new LinkedHashMap<>();
             for (Map.Entry<String, OracleRunner.Run> r : runs.entrySet()) {
                 said.put(r.getKey(), r.getValue() == null ? Map.of() : r.getValue().await());

@@ -13,12 +13,14 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code diff OLD NEW}: two runs' results compared (verdicts, errors against the truth, benchmark CPU
- * time, the run's own time per tick); exits 1 when NEW is worse than OLD beyond a tolerance.
+ * time, the run's own time per tick); exits 1 when NEW is worse than OLD beyond a tolerance. With
+ * {@code --same-state}, the scenes' state hashes alone: exits 1 when a scene's state differs.
  */
 @Command(name = "diff", mixinStandardHelpOptions = true,
         description = "Compares two runs (reports folders, or their results.json, compare.json or bench.json) and "
                 + "fails on a regression beyond the tolerances: a scene that turned FAIL or ERROR, an error against "
-                + "the truth that grew, a benchmark or run that got slower.")
+                + "the truth that grew, a benchmark or run that got slower; with --same-state, a scene whose state "
+                + "differs.")
 final class DiffCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -45,12 +47,19 @@ final class DiffCommand implements Callable<Integer> {
             description = "Scenes whose run took less (in either run) are not timed (default: ${DEFAULT-VALUE}).")
     double runMillis;
 
+    @Option(names = "--same-state",
+            description = "Compare only the scenes' state hashes (results.json, stateHash): every scene both runs ran "
+                    + "to its end must have gone bit for bit the same way (a run at --workers 1 against one at 2, a build "
+                    + "before an optimisation against one after).")
+    boolean sameState;
+
     @Override
     public Integer call() throws Exception {
         for (double t : new double[] {accuracy, speed, runSpeed, runMillis}) {
             Options.require(spec, t >= 0 && Double.isFinite(t), "tolerances must be finite and >= 0, was " + t);
         }
-        RunDiff.Result r = RunDiff.diff(before, after, new RunDiff.Tolerances(accuracy, speed, runSpeed, runMillis));
+        RunDiff.Result r = sameState ? RunDiff.sameState(before, after)
+                : RunDiff.diff(before, after, new RunDiff.Tolerances(accuracy, speed, runSpeed, runMillis));
         List<RunDiff.Change> worse = r.regressions();
         for (String label : List.of("regressions", "improvements")) {
             List<RunDiff.Change> list = r.changes().stream().filter(c -> c.regression() == label.equals("regressions")).toList();
@@ -69,7 +78,8 @@ final class DiffCommand implements Callable<Integer> {
         System.out.println("diff: compared " + (counts.length() == 0 ? "nothing" : counts) + "; " + worse.size()
                 + " regressions, " + (r.changes().size() - worse.size()) + " improvements");
         if (r.compared().isEmpty()) {
-            System.err.println("diff: OLD and NEW share no results to compare");
+            System.err.println("diff: OLD and NEW share no " + (sameState ? "scene with a state hash" : "results")
+                    + " to compare");
             return ExitStatus.USAGE;
         }
         return worse.isEmpty() ? ExitStatus.OK : ExitStatus.FINDINGS;

@@ -18,6 +18,14 @@ final class Options {
         return value;
     }
 
+    /** The value when it is {@code min} to {@code max}; otherwise a usage error naming the option. */
+    static int within(CommandSpec spec, String option, int value, int min, int max) {
+        if (value < min || value > max) {
+            throw new ParameterException(spec.commandLine(), option + " must be " + min + " to " + max + ", was " + value);
+        }
+        return value;
+    }
+
     /** A usage error unless the condition holds. */
     static void require(CommandSpec spec, boolean condition, String message) {
         if (!condition) {

@@ -16,6 +16,7 @@ import org.emini.harness.report.ResultsWriter;
 import org.emini.harness.report.Summary;
 import org.emini.harness.run.SceneResult;
 import org.emini.harness.run.Status;
+import org.emini.world.World;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -74,6 +75,12 @@ final class RunCommand implements Callable<Integer> {
                     + "not by a margin (harness/README.md, Nudged runs).")
     Double nudge;
 
+    @Option(names = "--workers", paramLabel = "N", defaultValue = "1",
+            description = "Threads each scene's world shares its ticks among (World.setWorkerCount), 1 to "
+                    + World.MAX_WORKERS + " (default: ${DEFAULT-VALUE}). The engine promises the same bits for any "
+                    + "count: diff --same-state against a run at 1 proves it (harness/README.md, Worker threads).")
+    int workers;
+
     @Option(names = "-k", paramLabel = "PATTERN",
             description = "Only the scenes whose id matches: a glob (stacking/*, *-60hz) or a substring (pendulum); "
                     + "repeat for several.")
@@ -98,6 +105,7 @@ final class RunCommand implements Callable<Integer> {
             Options.atLeast(spec, "--jobs", jobs, 1);
         }
         Options.require(spec, sceneTimeout > 0, "--scene-timeout must be > 0, was " + sceneTimeout);
+        Options.within(spec, "--workers", workers, 1, World.MAX_WORKERS);
         // Made first, so that reports under a file fail now, not after the run.
         Files.createDirectories(reports);
         List<ScenarioLoader.Loaded> loaded = SceneFilter.keep(spec, SceneBatch.load(library.loader(),
@@ -128,7 +136,7 @@ final class RunCommand implements Callable<Integer> {
         try (ProgressBar pb = bar ? new ProgressBarBuilder().setTaskName("ticks").setInitialMax(totalTicks)
                 .setConsumer(new ConsoleProgressBarConsumer(System.err)).setUpdateIntervalMillis(250).build() : null;
              SceneBatch batch = new SceneBatch(loaded, threads, new SceneBatch.Settings(traces, false, false,
-                     sceneTimeout, pb == null ? n -> { } : pb::stepBy))) {
+                     sceneTimeout, pb == null ? n -> { } : pb::stepBy, workers))) {
             for (ScenarioLoader.Loaded l : loaded) {
                 SceneResult r = batch.result(l);
                 results.add(r);
@@ -152,8 +160,13 @@ final class RunCommand implements Callable<Integer> {
         if (nudged != null) {
             System.out.println(nudged);
         }
+        String shared = workers == 1 ? null : "workers: every scene's ticks shared among " + workers
+                + " threads (results.json, stateHash; diff --same-state against a run at 1)";
+        if (shared != null) {
+            System.out.println(shared);
+        }
         ResultsWriter.write(reports.resolve("results.json"), results, summary, traces,
-                sleeping == Sleeping.scene ? null : sleeping.name(), nudge);
+                sleeping == Sleeping.scene ? null : sleeping.name(), nudge, workers);
         JUnitXmlWriter.write(reports.resolve("junit").resolve("TEST-scenarios.xml"), results, summary);
         if (junit != null) {
             JUnitXmlWriter.write(junit, results, summary);
@@ -168,6 +181,9 @@ final class RunCommand implements Callable<Integer> {
         }
         if (nudged != null) {
             text.append(nudged).append('\n');
+        }
+        if (shared != null) {
+            text.append(shared).append('\n');
         }
         Files.writeString(reports.resolve("summary.txt"), text, StandardCharsets.UTF_8);
         return summary.failed() ? 1 : 0;

@@ -38,8 +38,10 @@ final class SceneBatch implements AutoCloseable {
      *     once written, so a library of long scenes fits in memory
      * @param timeoutSeconds wall-clock time a scene may tick before it stops as ERROR
      * @param ticks told how many ticks were just done (a progress bar)
+     * @param workers the threads each scene's world shares its ticks among ({@code run --workers}; 1 for none)
      */
-    record Settings(Path traces, boolean everyTrace, boolean keepTraces, double timeoutSeconds, LongConsumer ticks) {
+    record Settings(Path traces, boolean everyTrace, boolean keepTraces, double timeoutSeconds, LongConsumer ticks,
+                    int workers) {
     }
 
     private final ExecutorService pool;
@@ -136,7 +138,8 @@ final class SceneBatch implements AutoCloseable {
     }
 
     private static SceneResult run(ScenarioLoader.Loaded l, Settings settings) {
-        SceneResult r = ScenarioRunner.run(l.scenario(), settings.ticks(), settings.timeoutSeconds());
+        SceneResult r = ScenarioRunner.run(l.scenario(), settings.ticks(), settings.timeoutSeconds(),
+                settings.workers());
         if (settings.traces() != null && r.trace() != null && (settings.everyTrace() || l.scenario().run().record().trace())) {
             try {
                 TraceWriter.write(TraceWriter.fileFor(settings.traces(), r.scene()), r.scene(), "emini", r.trace());
@@ -156,6 +159,6 @@ final class SceneBatch implements AutoCloseable {
             msg.append("\n    ").append(p);
         }
         return new SceneResult(l.file().toString(), l.file().toString(), null, Status.ERROR, msg.toString(),
-                List.of(), List.of(), null, 0, 0, 0, 0, 0, null, -1, null, List.of());
+                List.of(), List.of(), null, 0, 0, 0, 0, 0, null, -1, null, List.of(), null);
     }
 }

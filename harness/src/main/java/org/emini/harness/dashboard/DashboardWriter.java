@@ -61,6 +61,7 @@ public final class DashboardWriter {
         data.add("results", results);
         data.add("sleeping", variantRun(readJson(reports.resolve("sleeping").resolve("results.json"))));
         data.add("nudged", nudgedRuns(reports.resolve("nudged")));
+        data.add("workers", variantRun(readJson(reports.resolve("workers").resolve("x2").resolve("results.json"))));
         data.add("compare", readJson(reports.resolve("compare").resolve("compare.json")));
         JsonObject stability = readJson(reports.resolve("stability").resolve("stability.json"));
         if (stability != null && stability.has("families")) {
@@ -196,9 +197,10 @@ public final class DashboardWriter {
 
     /**
      * A library run with one thing changed, beside the run as written: sleeping forced on
-     * ({@code reports/sleeping/results.json}) or a nudged speculative distance ({@code reports/nudged/}),
-     * both written by {@code ./emini run}. Its summary, what was changed ({@code mode}, {@code nudge}) and
-     * each scene's status, message and how many bodies slept, or null when there is none.
+     * ({@code reports/sleeping/results.json}), a nudged speculative distance ({@code reports/nudged/}) or
+     * two worker threads ({@code reports/workers/x2/}), all written by {@code ./emini run}. Its summary,
+     * what was changed ({@code mode}, {@code nudge}, {@code workers}) and each scene's status, message, how
+     * many bodies slept and state hash, or null when there is none.
      */
     static JsonObject variantRun(JsonObject results) {
         if (results == null || !results.has("scenes")) {
@@ -208,6 +210,7 @@ public final class DashboardWriter {
         out.add("generated", results.get("generated"));
         out.add("mode", results.get("sleeping"));
         out.add("nudge", results.get("nudge"));
+        out.add("workers", results.get("workers"));
         out.add("summary", results.get("summary"));
         JsonArray scenes = new JsonArray();
         for (JsonElement e : results.getAsJsonArray("scenes")) {
@@ -216,8 +219,10 @@ public final class DashboardWriter {
             o.add("scene", s.get("scene"));
             o.add("status", s.get("status"));
             o.add("message", s.get("message"));
-            if (s.has("mostAsleep")) {
-                o.add("mostAsleep", s.get("mostAsleep"));
+            for (String key : new String[] {"mostAsleep", "stateHash"}) {
+                if (s.has(key)) {
+                    o.add(key, s.get(key));
+                }
             }
             scenes.add(o);
         }

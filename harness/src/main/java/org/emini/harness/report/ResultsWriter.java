@@ -10,6 +10,7 @@ import java.time.Instant;
 import java.util.List;
 import org.emini.harness.expect.Verdict;
 import org.emini.harness.run.SceneResult;
+import org.emini.harness.run.StateHash;
 import org.emini.harness.scenario.KnownFailure;
 
 /** Writes {@code results.json}: the summary and every scene's status and figures (harness/README.md). */
@@ -26,18 +27,19 @@ public final class ResultsWriter {
      * @param traces the folder the traces went to (for relative links), or null if none were written
      */
     public static void write(Path file, List<SceneResult> results, Summary summary, Path traces) throws IOException {
-        write(file, results, summary, traces, null, null);
+        write(file, results, summary, traces, null, null, 1);
     }
 
     /**
-     * Writes the results of a run that forced sleeping on or off ({@code run --sleeping}) or nudged
-     * every scene ({@code run --nudge}).
+     * Writes the results of a run that forced sleeping on or off ({@code run --sleeping}), nudged every
+     * scene ({@code run --nudge}) or shared every scene's ticks among threads ({@code run --workers}).
      *
      * @param sleeping {@code on} or {@code off} as forced, or null when each scene had its own setting
      * @param nudge the factor on every scene's speculative distance, or null for none
+     * @param workers the threads every scene's world shared its ticks among (written when more than 1)
      */
     public static void write(Path file, List<SceneResult> results, Summary summary, Path traces, String sleeping,
-            Double nudge) throws IOException {
+            Double nudge, int workers) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
         try (Writer out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
             JsonWriter json = new JsonWriter(out);
@@ -51,6 +53,9 @@ public final class ResultsWriter {
             }
             if (nudge != null) {
                 json.name("nudge").value(nudge);
+            }
+            if (workers > 1) {
+                json.name("workers").value(workers);
             }
             json.name("summary").beginObject();
             json.name("scenes").value(summary.total());
@@ -86,6 +91,9 @@ public final class ResultsWriter {
         json.name("runMillis").value(round(r.runMillis()));
         if (r.ticks() > 0) {
             json.name("microsPerTick").value(round(r.microsPerTick()));
+        }
+        if (r.stateHash() != null) {
+            json.name("stateHash").value(StateHash.hex(r.stateHash()));
         }
         if (r.mostAsleep() >= 0) {
             json.name("mostAsleep").value(r.mostAsleep());

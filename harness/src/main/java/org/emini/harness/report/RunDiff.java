@@ -20,7 +20,9 @@ import java.util.Set;
  * ({@code results.json}), each comparison row's error against the truth ({@code compare/compare.json}),
  * each benchmark scene's CPU time per tick ({@code bench/bench.json}) and, for scenes that ran long enough
  * to time, the run's wall time per tick ({@code results.json}). A change for the worse beyond its
- * tolerance is a regression (harness/README.md, diff).
+ * tolerance is a regression (harness/README.md, diff). {@link #sameState} compares the scenes' state
+ * hashes alone: two runs that must be bit for bit the same (one thread against two, a build before an
+ * optimisation against one after).
  */
 public final class RunDiff {
     /**
@@ -37,7 +39,8 @@ public final class RunDiff {
     /**
      * One figure that changed.
      *
-     * @param kind {@code verdict}, {@code accuracy}, {@code speed} (benchmark) or {@code run speed}
+     * @param kind {@code verdict}, {@code accuracy}, {@code speed} (benchmark), {@code run speed} or
+     *     {@code state} (a scene's state hash, {@link #sameState})
      * @param scene the scene
      * @param what the row, channel or engine
      * @param before the old figure (a verdict or a number)
@@ -51,8 +54,9 @@ public final class RunDiff {
      * The outcome.
      *
      * @param changes the regressions and the improvements
-     * @param compared how many figures were compared, by kind
-     * @param notes what could not be compared (a file only one side has, scenes only one side ran)
+     * @param compared how many figures were compared, by kind ({@code state hashes} for {@link #sameState})
+     * @param notes what could not be compared (a file only one side has, scenes only one side ran, scenes
+     *     without a state hash), and how many scenes have the same state
      */
     public record Result(List<Change> changes, Map<String, Integer> compared, List<String> notes) {
         /** The regressions. */
@@ -127,15 +131,94 @@ public final class RunDiff {
         return new Result(changes, compared, notes);
     }
 
+    /**
+     * Compares only the scenes' state hashes ({@code diff --same-state}): every scene that both runs ran
+     * to its end must have the same one, else it is a regression of kind {@code state}. Scenes only one
+     * side ran, and those without a hash (unsupported, or stopped by an error: {@code SceneResult.stateHash}),
+     * are notes.
+     */
+    public static Result sameState(Path before, Path after) throws IOException {
+        JsonObject a = documents(before).get("emini-results");
+        JsonObject b = documents(after).get("emini-results");
+        List<Change> changes = new ArrayList<>();
+        Map<String, Integer> compared = new LinkedHashMap<>();
+        List<String> notes = new ArrayList<>();
+        if (a == null || b == null) {
+            notes.add((a == null && b == null ? "results.json in neither OLD nor NEW"
+                    : "results.json only in " + (a != null ? "OLD" : "NEW")) + ": no states to compare");
+            return new Result(changes, compared, notes);
+        }
+        States st = states(a, b);
+        for (String[] d : st.differing()) {
+            changes.add(new Change("state", d[0], "stateHash", d[1], d[2], true));
+        }
+        if (st.compared() > 0) {
+            compared.put("state hashes", st.compared());
+        }
+        notes.add(st.sameNote());
+        names(notes, st.onlyOld(), "of OLD not in NEW");
+        names(notes, st.onlyNew(), "of NEW not in OLD");
+        names(notes, st.unhashed(), "without a state hash in OLD or NEW (unsupported, or stopped by an error)");
+        return new Result(changes, compared, notes);
+    }
+
+    /**
+     * The scenes' state hashes side by side.
+     *
+     * @param compared scenes in both with a hash in both
+     * @param same those of them whose hashes are equal
+     * @param differing the others: scene, OLD's hash, NEW's hash
+     * @param onlyOld scenes only OLD ran
+     * @param onlyNew scenes only NEW ran
+     * @param unhashed scenes in both without a hash on one side or both
+     */
+    private record States(int compared, int same, List<String[]> differing, List<String> onlyOld, List<String> onlyNew,
+                          List<String> unhashed) {
+        String sameNote() {
+            return same + " of " + compared + " scenes with a state hash in both have the same state";
+        }
+    }
+
+    private static States states(JsonObject a, JsonObject b) {
+        Map<String, JsonObject> old = byKey(a, "scenes", s -> s.get("scene").getAsString());
+        Map<String, JsonObject> now = byKey(b, "scenes", s -> s.get("scene").getAsString());
+        int same = 0;
+        List<String[]> differing = new ArrayList<>();
+        List<String> onlyOld = new ArrayList<>();
+        List<String> unhashed = new ArrayList<>();
+        for (Map.Entry<String, JsonObject> e : old.entrySet()) {
+            JsonObject s = now.get(e.getKey());
+            if (s == null) {
+                onlyOld.add(e.getKey());
+            } else if (!has(e.getValue(), "stateHash") || !has(s, "stateHash")) {
+                unhashed.add(e.getKey());
+            } else if (e.getValue().get("stateHash").getAsString().equals(s.get("stateHash").getAsString())) {
+                same++;
+            } else {
+                differing.add(new String[] {e.getKey(), e.getValue().get("stateHash").getAsString(),
+                    s.get("stateHash").getAsString()});
+            }
+        }
+        List<String> onlyNew = new ArrayList<>(now.keySet());
+        onlyNew.removeAll(old.keySet());
+        return new States(same + differing.size(), same, differing, onlyOld, onlyNew, unhashed);
+    }
+
+    /** A note naming scenes ("3 scenes WHAT: a, b, c"), the first ten; none when there are none. */
+    private static void names(List<String> notes, List<String> scenes, String what) {
+        if (!scenes.isEmpty()) {
+            notes.add(scenes.size() + " scenes " + what + ": " + String.join(", ", scenes.subList(0, Math.min(10, scenes.size())))
+                    + (scenes.size() > 10 ? ", ..." : ""));
+        }
+    }
+
     private static void results(JsonObject a, JsonObject b, Tolerances tol, List<Change> out, Map<String, Integer> n,
                                 List<String> notes) {
         Map<String, JsonObject> old = byKey(a, "scenes", s -> s.get("scene").getAsString());
         Map<String, JsonObject> now = byKey(b, "scenes", s -> s.get("scene").getAsString());
-        int missing = 0;
         for (Map.Entry<String, JsonObject> e : old.entrySet()) {
             JsonObject s = now.get(e.getKey());
             if (s == null) {
-                missing++;
                 continue;
             }
             n.merge("verdict", 1, Integer::sum);
@@ -154,8 +237,12 @@ public final class RunDiff {
                         number(s, "microsPerTick"), tol.runSpeed(), 0, out);
             }
         }
-        if (missing > 0) {
-            notes.add(missing + " scenes of OLD not in NEW: not compared");
+        States st = states(a, b);
+        if (!st.onlyOld().isEmpty()) {
+            notes.add(st.onlyOld().size() + " scenes of OLD not in NEW: not compared");
+        }
+        if (st.compared() > 0) {
+            notes.add(st.sameNote() + " (bit for bit; diff --same-state fails on the others)");
         }
     }
 

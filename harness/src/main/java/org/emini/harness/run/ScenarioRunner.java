@@ -50,6 +50,21 @@ public final class ScenarioRunner {
      * scene cannot hang or take down a whole {@code run}.
      */
     public static SceneResult run(Scenario scenario, LongConsumer progress, double maxSeconds) {
+        return run(scenario, progress, maxSeconds, 1);
+    }
+
+    /**
+     * Runs a scene with a time limit, its world sharing each tick's contact solve among {@code workers}
+     * threads ({@code World.setWorkerCount}, set once the world is built, before its first tick). The
+     * engine promises the same bits for any count; the result's {@link SceneResult#stateHash} shows
+     * whether it kept that promise. The threads are stopped when the run ends, whatever its end, so a
+     * long {@code run} of many scenes leaves none behind.
+     *
+     * @param workers the threads that share a tick, counting the ticking one: 1 (none) to
+     *     {@code World.MAX_WORKERS}
+     * @throws IllegalArgumentException for a worker count out of that range (the caller checks its option)
+     */
+    public static SceneResult run(Scenario scenario, LongConsumer progress, double maxSeconds, int workers) {
         long ticks = scenario.ticks();
         long t0 = System.nanoTime();
         BuiltWorld built;
@@ -61,11 +76,26 @@ public final class ScenarioRunner {
             everyTick = EveryTick.of(scenario, built, samplingTicks(scenario.run().record(), scenario.world().timestep()));
         } catch (UnsupportedElementException e) {
             progress.accept(ticks);
-            return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null, -1, null);
+            return result(scenario, Status.UNSUPPORTED, "uses " + e.getMessage(), List.of(), List.of(), 0, 0, 0, null, -1,
+                    null, null);
         } catch (RuntimeException | OutOfMemoryError e) {
             progress.accept(ticks);
             return errorOrKnown(scenario, "building the world: " + e, 0, 0);
         }
+        // After all that may refuse the scene, so that a refusal leaves no threads behind.
+        World world = built.world();
+        world.setWorkerCount(workers);
+        try {
+            return ticked(scenario, built, metrics, everyTick, progress, maxSeconds, t0);
+        } finally {
+            world.setWorkerCount(1);
+        }
+    }
+
+    /** The ticks of a built world, its samples and verdicts ({@code t0}: when the build began). */
+    private static SceneResult ticked(Scenario scenario, BuiltWorld built, List<Metric> metrics, EveryTick everyTick,
+                                      LongConsumer progress, double maxSeconds, long t0) {
+        long ticks = scenario.ticks();
         long t1 = System.nanoTime();
         List<String> recorded = recordedBodies(scenario, built);
         List<String> metricChannels = new ArrayList<>();
@@ -81,7 +111,9 @@ public final class ScenarioRunner {
                 .toArray(Body[]::new) : null;
         int mostAsleep = sleepers == null ? -1 : 0;
         ReplayRecorder replay = ReplayRecorder.of(built, ticks);
+        long stateHash;
         try {
+            stateHash = StateHash.world(world);
             sample(trace, 0, bodies, metrics);
             if (everyTick != null) {
                 everyTick.afterTick(0);
@@ -106,6 +138,7 @@ public final class ScenarioRunner {
                             + "tick %d of %d; the run stops here (--scene-timeout)", maxSeconds, k + 1, ticks),
                             millis(t1 - t0), millis(System.nanoTime() - t1));
                 }
+                stateHash = 31 * stateHash + StateHash.world(world);
                 for (Metric m : metrics) {
                     m.afterTick();
                 }
@@ -144,7 +177,7 @@ public final class ScenarioRunner {
         StringBuilder message = new StringBuilder();
         Status status = Judge.judge(verdicts, scenario.knownFailure(), stale, message);
         return result(scenario, status, message.toString(), verdicts, stale, ticks, millis(t1 - t0), runMillis, trace,
-                mostAsleep, replay);
+                mostAsleep, replay, stateHash);
     }
 
     /**
@@ -268,7 +301,7 @@ public final class ScenarioRunner {
     private static SceneResult errorOrKnown(Scenario s, String message, double build, double run) {
         Status status = s.knownFailure() != null ? Status.KNOWN_FAILURE : Status.ERROR;
         String text = s.knownFailure() != null ? message + " [known: " + s.knownFailure().reason() + "]" : message;
-        return result(s, status, text, List.of(), List.of(), 0, build, run, null, -1, null);
+        return result(s, status, text, List.of(), List.of(), 0, build, run, null, -1, null, null);
     }
 
     private static int asleep(Body[] bodies) {
@@ -281,11 +314,11 @@ public final class ScenarioRunner {
 
     private static SceneResult result(Scenario s, Status status, String message, List<Verdict> verdicts,
                                       List<String> stale, long ticks, double build, double run, Trace trace,
-                                      int mostAsleep, ReplayRecorder replay) {
+                                      int mostAsleep, ReplayRecorder replay, Long stateHash) {
         List<org.emini.harness.metrics.PenetrationPair> pairs = trace == null ? List.of() : trace.penetrationPairs();
         return new SceneResult(s.name(), s.file(), s.category(), status, message, verdicts, stale, s.knownFailure(),
                 s.bodies().size(), ticks, s.world().timestep(), build, run, trace, mostAsleep, replay,
-                pairs.subList(0, Math.min(SceneResult.TOP_PAIRS, pairs.size())));
+                pairs.subList(0, Math.min(SceneResult.TOP_PAIRS, pairs.size())), stateHash);
     }
 
     private static double millis(long nanos) {

@@ -27,11 +27,18 @@ import org.emini.harness.scenario.KnownFailure;
  * @param replay what the dashboard's replay draws ({@link ReplayRecorder}), or null
  * @param penetrationPairs the pairs of bodies that overlapped deepest at the samples, deepest first (at most
  *     {@link #TOP_PAIRS}; empty when the scene did not compute penetration)
+ * @param stateHash the world's exact state ({@link StateHash#world}) before the first tick and after every
+ *     tick, chained ({@code h = 31 h + StateHash.world(world)}): two runs of the scene that went bit for bit
+ *     the same way have the same one, and two that did not almost surely another. Null unless the run
+ *     reached its last tick: for an unsupported scene, a build that failed and a run stopped by an error
+ *     (a body out of range, an exception, the time limit: where that stops depends on the clock), even
+ *     after some ticks, so that {@code diff --same-state} compares only runs that ended
  */
 public record SceneResult(String scene, String file, String category, Status status, String message,
                           List<Verdict> verdicts, List<String> staleKnownFailures, KnownFailure knownFailure,
                           int bodies, long ticks, double timestep, double buildMillis, double runMillis, Trace trace,
-                          int mostAsleep, ReplayRecorder replay, List<PenetrationPair> penetrationPairs) {
+                          int mostAsleep, ReplayRecorder replay, List<PenetrationPair> penetrationPairs,
+                          Long stateHash) {
 
     /** How many of the deepest pairs a result keeps (the trace keeps them all). */
     public static final int TOP_PAIRS = 5;
@@ -44,6 +51,6 @@ public record SceneResult(String scene, String file, String category, Status sta
     /** The same result without its trace and replay (after they are written, to free memory). */
     public SceneResult withoutTrace() {
         return new SceneResult(scene, file, category, status, message, verdicts, staleKnownFailures, knownFailure,
-                bodies, ticks, timestep, buildMillis, runMillis, null, mostAsleep, null, penetrationPairs);
+                bodies, ticks, timestep, buildMillis, runMillis, null, mostAsleep, null, penetrationPairs, stateHash);
     }
 }

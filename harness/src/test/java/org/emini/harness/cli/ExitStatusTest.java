@@ -58,14 +58,26 @@ class ExitStatusTest {
         oneLine(o);
     }
 
+    /** {@code run} with one option's value: a usage error whose one line says what is wrong. */
+    private static void refused(Path dir, String option, String value, String message) throws Exception {
+        Outcome o = run("run", "--schema", Repo.schema().toString(), "--reports", dir.resolve("r").toString(),
+                option, value, scene(dir).toString());
+        assertEquals(ExitStatus.USAGE, o.status(), option + " " + value);
+        assertTrue(o.err().contains(message), o.err());
+        oneLine(o);
+    }
+
     @Test
     void jobsMustBePositive(@TempDir Path dir) throws Exception {
         for (String jobs : new String[] {"0", "-3"}) {
-            Outcome o = run("run", "--schema", Repo.schema().toString(), "--reports", dir.resolve("r").toString(),
-                    "--jobs", jobs, scene(dir).toString());
-            assertEquals(ExitStatus.USAGE, o.status(), jobs);
-            assertTrue(o.err().contains("--jobs must be at least 1, was " + jobs), o.err());
-            oneLine(o);
+            refused(dir, "--jobs", jobs, "--jobs must be at least 1, was " + jobs);
+        }
+    }
+
+    @Test
+    void workersMustBeOneToSixtyFour(@TempDir Path dir) throws Exception {
+        for (String workers : new String[] {"0", "65"}) {
+            refused(dir, "--workers", workers, "--workers must be 1 to 64, was " + workers);
         }
     }
 

@@ -1,6 +1,7 @@
 package org.emini.harness.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.google.gson.JsonObject;
@@ -84,6 +85,24 @@ class RunCommandTest {
         assertTrue(Files.readString(reports.resolve("summary.txt")).contains("speculative distance times 1.02"));
         assertEquals(2, Main.execute("run", "--schema", Repo.schema().toString(), "--reports",
                 dir.resolve("r2").toString(), "--no-progress", "--nudge", "0", scenes.toString()));
+    }
+
+    @Test
+    void aRunAtTwoWorkersSaysSoAndHasTheSameState(@TempDir Path dir) throws Exception {
+        Path scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(scenes.resolve("a-pass.yaml"), String.format(FALLING, "name: falls"));
+        Path one = dir.resolve("one");
+        Path two = dir.resolve("two");
+        assertEquals(0, run(scenes, one));
+        assertEquals(0, Main.execute("run", "--schema", Repo.schema().toString(), "--reports", two.toString(),
+                "--no-progress", "--workers", "2", scenes.toString()));
+        assertFalse(results(one).has("workers"), "one worker, as every run before the option");
+        assertEquals(2, results(two).get("workers").getAsInt());
+        assertTrue(Files.readString(two.resolve("summary.txt")).contains("ticks shared among 2 threads"));
+        String hash = results(one).getAsJsonArray("scenes").get(0).getAsJsonObject().get("stateHash").getAsString();
+        assertTrue(hash.matches("[0-9a-f]{16}"), hash);
+        assertEquals(hash, results(two).getAsJsonArray("scenes").get(0).getAsJsonObject().get("stateHash").getAsString());
+        assertEquals(0, Main.execute("diff", "--same-state", one.toString(), two.toString()));
     }
 
     @Test

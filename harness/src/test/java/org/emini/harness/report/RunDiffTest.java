@@ -60,6 +60,42 @@ class RunDiffTest {
         assertEquals(1, RunDiff.diff(old, run(tmp.resolve("nan"), Double.NaN, 1, 0.4), TOL).regressions().size());
     }
 
+    /** A results.json of scenes, each "id" or "id=hash" (a scene without a hash ran into an error). */
+    private static Path results(Path dir, String... scenes) throws IOException {
+        StringBuilder json = new StringBuilder("{\"format\": \"emini-results\", \"scenes\": [");
+        for (int i = 0; i < scenes.length; i++) {
+            String[] s = scenes[i].split("=");
+            json.append(i == 0 ? "" : ", ").append("{\"scene\": \"").append(s[0]).append("\", \"status\": \"")
+                    .append(s.length > 1 ? "pass\", \"stateHash\": \"" + s[1] : "ERROR").append("\"}");
+        }
+        Files.createDirectories(dir);
+        Files.writeString(dir.resolve("results.json"), json.append("]}"));
+        return dir;
+    }
+
+    @Test
+    void aDifferentStateIsARegressionOfSameStateAndAMissingOneANote(@TempDir Path tmp) throws IOException {
+        Path old = results(tmp.resolve("old"), "a=00000000000000a1", "b=00000000000000b1", "c", "d=00000000000000d1");
+        Path now = results(tmp.resolve("new"), "a=00000000000000a1", "b=00000000000000b2", "c=00000000000000c2",
+                "e=00000000000000e2");
+        RunDiff.Result r = RunDiff.sameState(old, now);
+        assertEquals(List.of(new RunDiff.Change("state", "b", "stateHash", "00000000000000b1", "00000000000000b2", true)),
+                r.changes());
+        assertEquals(2, r.compared().get("state hashes"), "a and b: in both, with a hash in both");
+        assertEquals(List.of("1 of 2 scenes with a state hash in both have the same state",
+                "1 scenes of OLD not in NEW: d", "1 scenes of NEW not in OLD: e",
+                "1 scenes without a state hash in OLD or NEW (unsupported, or stopped by an error): c"), r.notes());
+        assertEquals(List.of(), RunDiff.sameState(old, old).changes());
+
+        RunDiff.Result plain = RunDiff.diff(old, now, TOL);
+        assertEquals(List.of(), plain.regressions(), "without --same-state a state is no regression");
+        assertTrue(plain.notes().contains("1 of 2 scenes with a state hash in both have the same state (bit for bit; "
+                + "diff --same-state fails on the others)"), plain.notes().toString());
+
+        Path unhashed = results(tmp.resolve("unhashed"), "a", "b");
+        assertTrue(RunDiff.sameState(old, unhashed).compared().isEmpty(), "nothing to compare: a usage error");
+    }
+
     @Test
     void aFolderWithoutResultsOrAForeignFileIsAnError(@TempDir Path tmp) throws IOException {
         Files.createDirectories(tmp.resolve("empty"));

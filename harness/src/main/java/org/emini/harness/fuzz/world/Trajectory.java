@@ -78,7 +78,7 @@ final class Trajectory {
             h = 31 * h + Float.floatToIntBits(((org.emini.dynamics.Constraint) c).getForce());
         }
         for (int e = 0; e < w.recipe().emitters.size(); e++) {
-            h = 31 * h + StateHash.particles(w.emitters().get(e));
+            h = 31 * h + org.emini.harness.run.StateHash.particles(w.emitters().get(e));
         }
         return h;
     }

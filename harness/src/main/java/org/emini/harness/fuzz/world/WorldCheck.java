@@ -179,7 +179,8 @@ public final class WorldCheck {
             found.put(ViolationKind.NONDETERMINISM, new Violation(ViolationKind.NONDETERMINISM, tick,
                     thrown != null ? "the second run threw " + thrown : String.format(
                             "two builds of the recipe differ after this tick (bodies %016x vs %016x, events %d vs %d)",
-                            StateHash.bodies(a.world()), StateHash.bodies(b.world()), a.eventCount(), b.eventCount())));
+                            org.emini.harness.run.StateHash.bodies(a.world()),
+                            org.emini.harness.run.StateHash.bodies(b.world()), a.eventCount(), b.eventCount())));
         }
     }
 }
