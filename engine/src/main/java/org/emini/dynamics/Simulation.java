@@ -1120,12 +1120,30 @@ public abstract class Simulation {
         sleep.setEnabled(enabled, this);
     }
 
-    /** The fewest contacts a thread is given in the narrowphase and the contact passes (tests split with 1). */
-    void setMinParallelPart(int contacts) {
-        solver.setMinParallelPart(contacts);
-        this.contacts.minPart = contacts;
-        proxies.setMinParallelPart(contacts);
-        minThreadedBodies = 0;
+    /**
+     * Splits every shared loop of a tick among the worker threads however little it holds, down to
+     * parts of one contact or one body, in worlds of any size ({@link #setWorkerCount(int)}). Slower,
+     * never faster: it is for tests. The results must be the same bit for bit at any worker count, and
+     * with the usual thresholds a world of fewer than 400 simulated bodies never shares a tick, so a
+     * test of a small world would check nothing; split, it checks every loop the threads share. Off by
+     * default; turning it off restores the thresholds.
+     *
+     * @param split true to split everything
+     */
+    public void setSplitAlways(boolean split) {
+        solver.setMinParallelPart(split ? 1 : Solver.MIN_BODIES, split ? 1 : ContactSolver.MIN_PART);
+        contacts.minPart = split ? 1 : ContactManager.MIN_PART;
+        proxies.setMinParallelPart(split ? 1 : Solver.MIN_BODIES);
+        minThreadedBodies = split ? 0 : MIN_THREADED_BODIES;
+    }
+
+    /**
+     * Whether every shared loop is split however little it holds ({@link #setSplitAlways}).
+     *
+     * @return false by default
+     */
+    public boolean isSplitAlways() {
+        return minThreadedBodies == 0;
     }
 
     /** Whether the last tick shared its loops with worker threads (for tests). */
@@ -1143,7 +1161,8 @@ public abstract class Simulation {
      * enough to sweep, and the calling thread moves and sweeps those in order); the joints, the
      * colouring, the velocity integration and the broadphase's changes are not. Parts are at least 64 contacts in the
      * narrowphase, 32 in a colour and 256 bodies, and a tick with fewer than 400 simulated bodies runs on
-     * the calling thread alone (the hand-offs would cost it more than they save). An idle thread spins about 80 µs, then parks:
+     * the calling thread alone (the hand-offs would cost it more than they save; tests split everything with
+     * {@link #setSplitAlways}). An idle thread spins about 80 µs, then parks:
      * between ticks, and within a tick while the calling thread does serial work longer than that.
      * The calling thread takes the parts no worker has taken once done with its own, so a parked
      * worker, or one the system does not schedule, never holds a tick up. Measured with two threads on

@@ -85,10 +85,10 @@ final class Solver {
         partFound = new int[(pool == null ? 1 : pool.getThreadCount()) * PAD];
     }
 
-    /** The fewest contacts of a colour (and bodies) given to a thread (tests split every colour with 1). */
-    void setMinParallelPart(int contacts) {
+    /** The fewest bodies, and contacts of a colour, given to a thread (Simulation.setSplitAlways). */
+    void setMinParallelPart(int bodies, int contacts) {
         this.contacts.minPart = contacts;
-        minBodies = contacts;
+        minBodies = bodies;
     }
 
     /**

@@ -20,7 +20,7 @@ class WorkerCountTest {
     private static long everything(boolean dynamicIterations, int workers, int ticks) {
         EverythingScene scene = new EverythingScene(dynamicIterations);
         scene.world.setWorkerCount(workers);
-        ((Simulation) scene.world).setMinParallelPart(1);
+        scene.world.setSplitAlways(true);
         try {
             scene.run(ticks);
             return scene.hash();
@@ -43,7 +43,7 @@ class WorkerCountTest {
         World world = new World();
         world.setTicksPerSecond(60);
         world.setWorkerCount(workers);
-        ((Simulation) world).setMinParallelPart(1);
+        world.setSplitAlways(true);
         return world;
     }
 
@@ -234,6 +234,13 @@ class WorkerCountTest {
             }
             world.tick();
             assertTrue(!((Simulation) world).sharedLastTick(), below + " bodies: alone");
+            // Split always, the same world shares its tick; back off, it no longer does.
+            world.setSplitAlways(true);
+            world.tick();
+            assertTrue(((Simulation) world).sharedLastTick() && world.isSplitAlways(), below + " bodies, split always: shared");
+            world.setSplitAlways(false);
+            world.tick();
+            assertTrue(!((Simulation) world).sharedLastTick() && !world.isSplitAlways(), below + " bodies, split no longer: alone");
             world.addBody(new Body(-9000f, -200f, Shape.createRectangle(20f, 20f), true));
             world.tick();
             assertTrue(((Simulation) world).sharedLastTick(), (below + 1) + " bodies: shared");
@@ -247,7 +254,7 @@ class WorkerCountTest {
         World world = new World();
         world.setTicksPerSecond(60);
         world.setWorkerCount(2);
-        ((Simulation) world).setMinParallelPart(1);
+        world.setSplitAlways(true);
         Thread ticking = Thread.currentThread();
         int[] asked = new int[2];
         world.setCollisionFilter((a, b) -> {

@@ -55,9 +55,11 @@ public final class ScenarioRunner {
 
     /**
      * Runs a scene with a time limit, its world sharing each tick's contact solve among {@code workers}
-     * threads ({@code World.setWorkerCount}, set once the world is built, before its first tick). The
+     * threads ({@code World.setWorkerCount}, set once the world is built, before its first tick), every
+     * shared loop split however little it holds ({@code World.setSplitAlways}): without that, a world of
+     * fewer than 400 simulated bodies would tick on one thread, and most scenes would check nothing. The
      * engine promises the same bits for any count; the result's {@link SceneResult#stateHash} shows
-     * whether it kept that promise. The threads are stopped when the run ends, whatever its end, so a
+     * whether it kept that promise. Slower than one thread: not a speed figure. The threads are stopped when the run ends, whatever its end, so a
      * long {@code run} of many scenes leaves none behind.
      *
      * @param workers the threads that share a tick, counting the ticking one: 1 (none) to
@@ -85,10 +87,12 @@ public final class ScenarioRunner {
         // After all that may refuse the scene, so that a refusal leaves no threads behind.
         World world = built.world();
         world.setWorkerCount(workers);
+        world.setSplitAlways(workers > 1);
         try {
             return ticked(scenario, built, metrics, everyTick, progress, maxSeconds, t0);
         } finally {
             world.setWorkerCount(1);
+            world.setSplitAlways(false);
         }
     }
 

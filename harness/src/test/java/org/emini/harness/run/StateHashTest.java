@@ -52,8 +52,7 @@ class StateHashTest {
 
     @Test
     void tenPyramidsAreBitIdenticalAtTwoWorkersWhoseThreadsEndWithTheRun() throws Exception {
-        // 2,101 bodies: above the 400 simulated bodies below which the engine ticks on one thread alone
-        // (Simulation.MIN_THREADED_BODIES), so the two threads share every tick's solve. One second of it.
+        // 2,101 bodies and some 4,000 contacts a tick, split between the two threads. One second of it.
         String text = Files.readString(Repo.scenarios().resolve("bench/pyramids-10x20.yaml"));
         assertTrue(text.contains("duration: 10\n"), "the scene's duration, to shorten");
         ScenarioLoader.Loaded l = Scenes.load("bench/pyramids-10x20.yaml", text.replace("duration: 10\n", "duration: 1\n"));

@@ -68,62 +68,75 @@ public final class WorldCheck {
         } catch (RuntimeException e) {
             return new Result(List.of(new Violation(ViolationKind.BUILD, -1, TickFailure.describe(e))), 0, null);
         }
-        Map<ViolationKind, TickCheck> checks = checks(r, wanted);
-        for (TickCheck c : checks.values()) {
-            c.start(a);
+        // The twin ticks at two threads, every shared loop split however small the world: the engine promises
+        // the same bits for any thread count, so the nondeterminism check covers the threads too.
+        FuzzWorld twin = b;
+        if (twin != null) {
+            twin.world().setWorkerCount(2);
+            twin.world().setSplitAlways(true);
         }
-        AllocationCheck allocation = wanted.contains(ViolationKind.ALLOCATION) && METER.supported() ? new AllocationCheck(ticks) : null;
-        boolean tolerant = r.profile == Profile.EXTREME || !r.removals.isEmpty();
-        String clearError = null;
-        int tick = 0;
-        for (; tick < ticks; tick++) {
-            Throwable thrown = null;
-            long before = METER.bytes();
-            try {
-                a.tick();
-            } catch (RuntimeException | StackOverflowError e) {
-                thrown = e;
+        try {
+            Map<ViolationKind, TickCheck> checks = checks(r, wanted);
+            for (TickCheck c : checks.values()) {
+                c.start(a);
             }
-            long bytes = METER.between(before, METER.bytes());
-            if (thrown != null) {
-                if (tolerant && TickFailure.clear(thrown)) {
-                    clearError = TickFailure.describe(thrown);
-                } else if (wanted.contains(ViolationKind.EXCEPTION) || wanted.contains(ViolationKind.NON_FINITE)) {
-                    found.putIfAbsent(TickFailure.violation(thrown, tick).kind(), TickFailure.violation(thrown, tick));
+            AllocationCheck allocation = wanted.contains(ViolationKind.ALLOCATION) && METER.supported() ? new AllocationCheck(ticks) : null;
+            boolean tolerant = r.profile == Profile.EXTREME || !r.removals.isEmpty();
+            String clearError = null;
+            int tick = 0;
+            for (; tick < ticks; tick++) {
+                Throwable thrown = null;
+                long before = METER.bytes();
+                try {
+                    a.tick();
+                } catch (RuntimeException | StackOverflowError e) {
+                    thrown = e;
                 }
-                break;
-            }
-            if (allocation != null) {
-                allocation.record(a, tick, bytes);
-            }
-            if (b != null && !found.containsKey(ViolationKind.NONDETERMINISM)) {
-                twin(a, b, tick, found);
-            }
-            for (Map.Entry<ViolationKind, TickCheck> c : checks.entrySet()) {
-                if (!found.containsKey(c.getKey())) {
-                    Violation v = c.getValue().afterTick(a, tick);
-                    if (v != null) {
-                        found.put(v.kind(), v);
+                long bytes = METER.between(before, METER.bytes());
+                if (thrown != null) {
+                    if (tolerant && TickFailure.clear(thrown)) {
+                        clearError = TickFailure.describe(thrown);
+                    } else if (wanted.contains(ViolationKind.EXCEPTION) || wanted.contains(ViolationKind.NON_FINITE)) {
+                        found.putIfAbsent(TickFailure.violation(thrown, tick).kind(), TickFailure.violation(thrown, tick));
+                    }
+                    break;
+                }
+                if (allocation != null) {
+                    allocation.record(a, tick, bytes);
+                }
+                if (b != null && !found.containsKey(ViolationKind.NONDETERMINISM)) {
+                    twin(a, b, tick, found);
+                }
+                for (Map.Entry<ViolationKind, TickCheck> c : checks.entrySet()) {
+                    if (!found.containsKey(c.getKey())) {
+                        Violation v = c.getValue().afterTick(a, tick);
+                        if (v != null) {
+                            found.put(v.kind(), v);
+                        }
                     }
                 }
+                if (found.containsKey(ViolationKind.NON_FINITE)) {
+                    tick++;
+                    break;
+                }
             }
-            if (found.containsKey(ViolationKind.NON_FINITE)) {
-                tick++;
-                break;
+            if (allocation != null && clearError == null) {
+                Violation v = allocation.verdict(tick);
+                if (v != null && !found.containsKey(ViolationKind.EXCEPTION) && !found.containsKey(ViolationKind.NON_FINITE)) {
+                    v = stillAllocating(a, allocation, v, tick);
+                }
+                if (v != null) {
+                    found.put(v.kind(), v);
+                }
+            }
+            List<Violation> list = new ArrayList<>(found.values());
+            list.sort((x, y) -> Integer.compare(x.tick(), y.tick()));
+            return new Result(list, tick, clearError);
+        } finally {
+            if (twin != null) {
+                twin.world().setWorkerCount(1);
             }
         }
-        if (allocation != null && clearError == null) {
-            Violation v = allocation.verdict(tick);
-            if (v != null && !found.containsKey(ViolationKind.EXCEPTION) && !found.containsKey(ViolationKind.NON_FINITE)) {
-                v = stillAllocating(a, allocation, v, tick);
-            }
-            if (v != null) {
-                found.put(v.kind(), v);
-            }
-        }
-        List<Violation> list = new ArrayList<>(found.values());
-        list.sort((x, y) -> Integer.compare(x.tick(), y.tick()));
-        return new Result(list, tick, clearError);
     }
 
     /**
