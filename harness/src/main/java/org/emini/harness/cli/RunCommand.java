@@ -78,7 +78,8 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--workers", paramLabel = "N", defaultValue = "1",
             description = "Threads each scene's world shares its ticks among (World.setWorkerCount), 1 to "
                     + World.MAX_WORKERS + " (default: ${DEFAULT-VALUE}). The engine promises the same bits for any "
-                    + "count: diff --same-state against a run at 1 proves it (harness/README.md, Worker threads).")
+                    + "count: diff --same-state against a run at 1 proves it; every shared loop is split, so small worlds share too "
+                    + "(World.setSplitAlways; slower, not a speed figure; harness/README.md, Worker threads).")
     int workers;
 
     @Option(names = "-k", paramLabel = "PATTERN",
@@ -161,7 +162,8 @@ final class RunCommand implements Callable<Integer> {
             System.out.println(nudged);
         }
         String shared = workers == 1 ? null : "workers: every scene's ticks shared among " + workers
-                + " threads (results.json, stateHash; diff --same-state against a run at 1)";
+                + " threads, every shared loop split (World.setSplitAlways; results.json, stateHash; diff --same-state against"
+                + " a run at 1)";
         if (shared != null) {
             System.out.println(shared);
         }
