@@ -1030,8 +1030,9 @@ final class ContactSolver {
                 int po = fo + P0 + p * PS;
                 float maxF = friction * f[po + NIMP];
                 // No normal impulse and no friction impulse to take back (a speculative point, or one
-                // separating): the clamp would leave a zero and change no velocity. Nearly half the
-                // tumbler's points; it runs 7-10% faster.
+                // separating): the clamp would leave a zero (of either sign) and change no velocity but
+                // the sign of a zero one. In 58% of the tumbler's contact visits no point has an impulse;
+                // it runs 7-9% faster.
                 if (maxF == 0f && f[po + TIMP] == 0f) {
                     continue;
                 }

@@ -91,8 +91,8 @@ public final class ScenarioRunner {
         try {
             return ticked(scenario, built, metrics, everyTick, progress, maxSeconds, t0);
         } finally {
+            // Stops the pool's threads; the world itself is dropped with the result.
             world.setWorkerCount(1);
-            world.setSplitAlways(false);
         }
     }
 

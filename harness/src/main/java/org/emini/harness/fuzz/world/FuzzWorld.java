@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Map;
 import org.emini.dynamics.Body;
 import org.emini.dynamics.Constraint;
+import org.emini.harness.run.StateHash;
 import org.emini.world.World;
 import org.emini.particle.ParticleEmitter;
 
@@ -39,6 +40,19 @@ public record FuzzWorld(Recipe recipe, World world, Body[] bodies, Map<Integer, 
             }
         }
         return String.valueOf(b);
+    }
+
+    /**
+     * The whole state as one hash: {@link StateHash#dynamics} of the world, the emitters the recipe made
+     * (in the recipe's order, kept after their body is removed from the world) and the events the listener
+     * heard. Equal hashes after each tick are what "bit-identical" means for twin runs.
+     */
+    public long stateHash() {
+        long h = StateHash.dynamics(world);
+        for (ParticleEmitter e : emitters) {
+            h = 31 * h + StateHash.particles(e);
+        }
+        return 31 * h + (listener == null ? 0 : listener.hash());
     }
 
     /** Whether the body is still in the world. */

@@ -2,6 +2,7 @@ package org.emini.harness.fuzz.world;
 
 import java.util.function.Consumer;
 import org.emini.dynamics.Body;
+import org.emini.harness.run.StateHash;
 
 /**
  * The states of a run: after each tick (and before the first), every recipe body's x, y, angle, vx,
@@ -78,7 +79,7 @@ final class Trajectory {
             h = 31 * h + Float.floatToIntBits(((org.emini.dynamics.Constraint) c).getForce());
         }
         for (int e = 0; e < w.recipe().emitters.size(); e++) {
-            h = 31 * h + org.emini.harness.run.StateHash.particles(w.emitters().get(e));
+            h = 31 * h + StateHash.particles(w.emitters().get(e));
         }
         return h;
     }

@@ -5,6 +5,7 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import org.emini.harness.run.StateHash;
 
 /**
  * Runs a recipe and checks the invariants after every tick: finite state and ticks that throw only
@@ -55,7 +56,6 @@ public final class WorldCheck {
      * the checks must catch).
      */
     public static Result run(Recipe r, Set<ViolationKind> wanted, int ticks, java.util.function.Consumer<FuzzWorld> plant) {
-        Map<ViolationKind, Violation> found = new EnumMap<>(ViolationKind.class);
         FuzzWorld a;
         FuzzWorld b = null;
         try {
@@ -70,73 +70,78 @@ public final class WorldCheck {
         }
         // The twin ticks at two threads, every shared loop split however small the world: the engine promises
         // the same bits for any thread count, so the nondeterminism check covers the threads too.
-        FuzzWorld twin = b;
-        if (twin != null) {
-            twin.world().setWorkerCount(2);
-            twin.world().setSplitAlways(true);
+        if (b != null) {
+            b.world().setWorkerCount(2);
+            b.world().setSplitAlways(true);
         }
         try {
-            Map<ViolationKind, TickCheck> checks = checks(r, wanted);
-            for (TickCheck c : checks.values()) {
-                c.start(a);
-            }
-            AllocationCheck allocation = wanted.contains(ViolationKind.ALLOCATION) && METER.supported() ? new AllocationCheck(ticks) : null;
-            boolean tolerant = r.profile == Profile.EXTREME || !r.removals.isEmpty();
-            String clearError = null;
-            int tick = 0;
-            for (; tick < ticks; tick++) {
-                Throwable thrown = null;
-                long before = METER.bytes();
-                try {
-                    a.tick();
-                } catch (RuntimeException | StackOverflowError e) {
-                    thrown = e;
-                }
-                long bytes = METER.between(before, METER.bytes());
-                if (thrown != null) {
-                    if (tolerant && TickFailure.clear(thrown)) {
-                        clearError = TickFailure.describe(thrown);
-                    } else if (wanted.contains(ViolationKind.EXCEPTION) || wanted.contains(ViolationKind.NON_FINITE)) {
-                        found.putIfAbsent(TickFailure.violation(thrown, tick).kind(), TickFailure.violation(thrown, tick));
-                    }
-                    break;
-                }
-                if (allocation != null) {
-                    allocation.record(a, tick, bytes);
-                }
-                if (b != null && !found.containsKey(ViolationKind.NONDETERMINISM)) {
-                    twin(a, b, tick, found);
-                }
-                for (Map.Entry<ViolationKind, TickCheck> c : checks.entrySet()) {
-                    if (!found.containsKey(c.getKey())) {
-                        Violation v = c.getValue().afterTick(a, tick);
-                        if (v != null) {
-                            found.put(v.kind(), v);
-                        }
-                    }
-                }
-                if (found.containsKey(ViolationKind.NON_FINITE)) {
-                    tick++;
-                    break;
-                }
-            }
-            if (allocation != null && clearError == null) {
-                Violation v = allocation.verdict(tick);
-                if (v != null && !found.containsKey(ViolationKind.EXCEPTION) && !found.containsKey(ViolationKind.NON_FINITE)) {
-                    v = stillAllocating(a, allocation, v, tick);
-                }
-                if (v != null) {
-                    found.put(v.kind(), v);
-                }
-            }
-            List<Violation> list = new ArrayList<>(found.values());
-            list.sort((x, y) -> Integer.compare(x.tick(), y.tick()));
-            return new Result(list, tick, clearError);
+            return check(r, wanted, ticks, a, b);
         } finally {
-            if (twin != null) {
-                twin.world().setWorkerCount(1);
+            if (b != null) {
+                b.world().setWorkerCount(1);
             }
         }
+    }
+
+    /** Ticks the world (and its twin, when there is one) and runs the wanted checks after each tick. */
+    private static Result check(Recipe r, Set<ViolationKind> wanted, int ticks, FuzzWorld a, FuzzWorld b) {
+        Map<ViolationKind, Violation> found = new EnumMap<>(ViolationKind.class);
+        Map<ViolationKind, TickCheck> checks = checks(r, wanted);
+        for (TickCheck c : checks.values()) {
+            c.start(a);
+        }
+        AllocationCheck allocation = wanted.contains(ViolationKind.ALLOCATION) && METER.supported() ? new AllocationCheck(ticks) : null;
+        boolean tolerant = r.profile == Profile.EXTREME || !r.removals.isEmpty();
+        String clearError = null;
+        int tick = 0;
+        for (; tick < ticks; tick++) {
+            Throwable thrown = null;
+            long before = METER.bytes();
+            try {
+                a.tick();
+            } catch (RuntimeException | StackOverflowError e) {
+                thrown = e;
+            }
+            long bytes = METER.between(before, METER.bytes());
+            if (thrown != null) {
+                if (tolerant && TickFailure.clear(thrown)) {
+                    clearError = TickFailure.describe(thrown);
+                } else if (wanted.contains(ViolationKind.EXCEPTION) || wanted.contains(ViolationKind.NON_FINITE)) {
+                    found.putIfAbsent(TickFailure.violation(thrown, tick).kind(), TickFailure.violation(thrown, tick));
+                }
+                break;
+            }
+            if (allocation != null) {
+                allocation.record(a, tick, bytes);
+            }
+            if (b != null && !found.containsKey(ViolationKind.NONDETERMINISM)) {
+                twin(a, b, tick, found);
+            }
+            for (Map.Entry<ViolationKind, TickCheck> c : checks.entrySet()) {
+                if (!found.containsKey(c.getKey())) {
+                    Violation v = c.getValue().afterTick(a, tick);
+                    if (v != null) {
+                        found.put(v.kind(), v);
+                    }
+                }
+            }
+            if (found.containsKey(ViolationKind.NON_FINITE)) {
+                tick++;
+                break;
+            }
+        }
+        if (allocation != null && clearError == null) {
+            Violation v = allocation.verdict(tick);
+            if (v != null && !found.containsKey(ViolationKind.EXCEPTION) && !found.containsKey(ViolationKind.NON_FINITE)) {
+                v = stillAllocating(a, allocation, v, tick);
+            }
+            if (v != null) {
+                found.put(v.kind(), v);
+            }
+        }
+        List<Violation> list = new ArrayList<>(found.values());
+        list.sort((x, y) -> Integer.compare(x.tick(), y.tick()));
+        return new Result(list, tick, clearError);
     }
 
     /**
@@ -186,14 +191,14 @@ public final class WorldCheck {
         } catch (RuntimeException e) {
             thrown = TickFailure.describe(e);
         }
-        long ha = StateHash.of(a);
-        long hb = thrown == null ? StateHash.of(b) : ha + 1;
+        long ha = a.stateHash();
+        long hb = thrown == null ? b.stateHash() : ha + 1;
         if (ha != hb) {
             found.put(ViolationKind.NONDETERMINISM, new Violation(ViolationKind.NONDETERMINISM, tick,
                     thrown != null ? "the second run threw " + thrown : String.format(
                             "two builds of the recipe differ after this tick (bodies %016x vs %016x, events %d vs %d)",
-                            org.emini.harness.run.StateHash.bodies(a.world()),
-                            org.emini.harness.run.StateHash.bodies(b.world()), a.eventCount(), b.eventCount())));
+                            StateHash.bodies(a.world()),
+                            StateHash.bodies(b.world()), a.eventCount(), b.eventCount())));
         }
     }
 }
