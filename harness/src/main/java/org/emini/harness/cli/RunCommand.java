@@ -16,6 +16,7 @@ import org.emini.harness.report.ResultsWriter;
 import org.emini.harness.report.Summary;
 import org.emini.harness.run.SceneResult;
 import org.emini.harness.run.Status;
+import org.emini.harness.scenario.Scenario;
 import org.emini.world.World;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -71,8 +72,8 @@ final class RunCommand implements Callable<Integer> {
 
     @Option(names = "--nudge", paramLabel = "F",
             description = "Run every scene with the engine's speculative distance times F (the scene's own or the "
-                    + "default 0.5 px): with F = 0.98 or 1.02 a verdict that flips was reached by the round-off's luck, "
-                    + "not by a margin (harness/README.md, Nudged runs).")
+                    + "default 0.5 px) and gravity times 1 + (F - 1) / 10,000: with F = 0.98 or 1.02 a verdict that "
+                    + "flips was reached by the round-off's luck, not by a margin (harness/README.md, Nudged runs).")
     Double nudge;
 
     @Option(names = "--workers", paramLabel = "N", defaultValue = "1",
@@ -157,7 +158,8 @@ final class RunCommand implements Callable<Integer> {
         if (slept != null) {
             System.out.println(slept);
         }
-        String nudged = nudge == null ? null : "nudged: every scene's speculative distance times " + nudge;
+        String nudged = nudge == null ? null : "nudged: every scene's speculative distance times " + nudge
+                + " and gravity times " + Scenario.gravityNudge(nudge);
         if (nudged != null) {
             System.out.println(nudged);
         }

@@ -29,6 +29,12 @@ public record WorldSpec(double timestep, int iterations, boolean dynamicIteratio
                 dampingRotational, hasSimulationArea, solver, newSleeping);
     }
 
+    /** This world with another gravity (px/s²). */
+    public WorldSpec withGravity(double newGravityX, double newGravityY) {
+        return new WorldSpec(timestep, iterations, dynamicIterations, newGravityX, newGravityY, dampingLateral,
+                dampingRotational, hasSimulationArea, solver, sleeping);
+    }
+
     /** This world with other engine tunables (by SolverSettings name). */
     public WorldSpec withSolver(Map<String, Double> newSolver) {
         return new WorldSpec(timestep, iterations, dynamicIterations, gravityX, gravityY, dampingLateral,
