@@ -87,14 +87,16 @@ class PinnedHashTest {
         assertTrue(scene.world.getParticleEmitter(0).getParticleCount() > 0, "particles");
     }
 
-    static final long PINNED_FIXED = 0x98A5BA91AFF74C23L;
-    static final long PINNED_FIXED_NO_REUSE = 0x054F4DC8CA70EECDL;
-    static final long PINNED_EVERYTHING_DYNAMIC = 0x66D0C06D28834E9AL;
+    static final long PINNED_FIXED = 0x9ED645BF515077AFL;
+    static final long PINNED_FIXED_NO_REUSE = 0x39D80EC647F7BBB7L;
+    // Since impact relax passes went from 30 to 100 a substep, the float flavour's everything scene never
+    // meets the convergence tolerance, so with dynamic iterations it runs every iteration and hashes as
+    // with fixed ones; the double flavour's did so before and now stops early.
+    static final long PINNED_EVERYTHING_DYNAMIC = 0x9ED645BF515077AFL;
     static final long PINNED_DYNAMIC = 0xB17571DB506ED1E1L;
-    // The double flavour's (engine-double). Its everything scene with dynamic iterations hashes as with
-    // fixed ones: there the solver never meets the convergence tolerance, so it runs every iteration.
-    static final long PINNED_FIXED_DOUBLE = 0xC6BB6C96684E9A63L;
-    static final long PINNED_FIXED_NO_REUSE_DOUBLE = 0xA97B97FA91D54647L;
-    static final long PINNED_EVERYTHING_DYNAMIC_DOUBLE = 0xC6BB6C96684E9A63L;
+    // The double flavour's (engine-double).
+    static final long PINNED_FIXED_DOUBLE = 0xCFF3F14F53AA3731L;
+    static final long PINNED_FIXED_NO_REUSE_DOUBLE = 0x412CFFFD3A5B3FA1L;
+    static final long PINNED_EVERYTHING_DYNAMIC_DOUBLE = 0x3940B387251385DDL;
     static final long PINNED_DYNAMIC_DOUBLE = 0x3D8CE13162AB6423L;
 }

@@ -26,7 +26,7 @@ public final class SolverSettings {
     private float restitutionThreshold = 10f;
     private float convergenceTolerance = 0.02f;
     private float impactTolerance = 5f;
-    private int impactRelaxPasses = 30;
+    private int impactRelaxPasses = 100;
     private float sinkLimit = 0.5f;
     private float sinkSubstepFactor = 2f;
     private float timeOfImpactTarget = 0.25f;
@@ -343,12 +343,14 @@ public final class SolverSettings {
 
     /**
      * Most relax passes per substep over the contacts of bodies an impact moved (see
-     * {@link #getImpactTolerance()}). Default 30; 0 turns them off (Box2D v3's plain soft step).
-     * Gauss–Seidel carries an impact through a column of n bodies in about n² passes: at 10, ten
-     * boxes dropped together onto the ground with elasticity 0 rebounded at 25–35% of the impact
-     * speed and a grid created overlapping spread at 136 px/s; at 30, under 3% and 29 px/s. A pile that
-     * keeps tumbling pays for them: the tumbler benchmark makes about 69 a tick (17 a substep) over
-     * 10,500 contacts in all, 0.73 ms of its 4.6 (2026-11-29).
+     * {@link #getImpactTolerance()}). Default 100; 0 turns them off (Box2D v3's plain soft step).
+     * Gauss–Seidel carries an impact through a column of n bodies in about n² passes: ten boxes
+     * dropped together onto the ground at 20 ticks a second with elasticity 0 rebounded at 25–35% of
+     * the impact speed with 10; with 30 at 2.6% as written but at 14.6% (the top two boxes leaving the
+     * column) with gravity two parts per million weaker; with 100 at 0.7–2.6% either way
+     * ({@code ColumnDropTest}). Passes run only while an impact still moves bodies, so the cap costs
+     * what the impacts need: the tumbler benchmark, a pile that keeps tumbling, ran as fast with 100 as
+     * with 30, and rain-5,000 while its bodies land 2-4% slower (2026-11-30).
      *
      * @return the passes
      */
