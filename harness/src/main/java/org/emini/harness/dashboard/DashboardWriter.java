@@ -210,6 +210,7 @@ public final class DashboardWriter {
         out.add("generated", results.get("generated"));
         out.add("mode", results.get("sleeping"));
         out.add("nudge", results.get("nudge"));
+        out.add("nudgeGravity", results.get("nudgeGravity"));
         out.add("workers", results.get("workers"));
         out.add("summary", results.get("summary"));
         JsonArray scenes = new JsonArray();

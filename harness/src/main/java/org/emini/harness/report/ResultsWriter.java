@@ -12,6 +12,7 @@ import org.emini.harness.expect.Verdict;
 import org.emini.harness.run.SceneResult;
 import org.emini.harness.run.StateHash;
 import org.emini.harness.scenario.KnownFailure;
+import org.emini.harness.scenario.Scenario;
 
 /** Writes {@code results.json}: the summary and every scene's status and figures (harness/README.md). */
 public final class ResultsWriter {
@@ -35,7 +36,8 @@ public final class ResultsWriter {
      * scene ({@code run --nudge}) or shared every scene's ticks among threads ({@code run --workers}).
      *
      * @param sleeping {@code on} or {@code off} as forced, or null when each scene had its own setting
-     * @param nudge the factor on every scene's speculative distance, or null for none
+     * @param nudge the nudge of every scene (its speculative distance times it, and gravity times
+     *     {@link Scenario#gravityNudge}, written beside it as {@code nudgeGravity}), or null for none
      * @param workers the threads every scene's world shared its ticks among (written when more than 1)
      */
     public static void write(Path file, List<SceneResult> results, Summary summary, Path traces, String sleeping,
@@ -53,6 +55,7 @@ public final class ResultsWriter {
             }
             if (nudge != null) {
                 json.name("nudge").value(nudge);
+                json.name("nudgeGravity").value(Scenario.gravityNudge(nudge));
             }
             if (workers > 1) {
                 json.name("workers").value(workers);

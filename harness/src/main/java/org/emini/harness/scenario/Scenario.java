@@ -60,9 +60,9 @@ public record Scenario(String name, String file, String description, String cate
      * scene's own, or the engine's default) times {@code factor}, and the world's gravity times
      * {@code 1 + (factor - 1) / 10,000}, two parts per million at 1.02. Neither changes the physics
      * by anything a scene's bounds should notice, but together they change the round-off of nearly
-     * every scene: the speculative distance alone reached only the scenes where some gap falls
-     * between the two distances (14 of the library's 99), gravity every scene with gravity (73 to 75). A verdict that flips
-     * under a nudge of a percent or two was reached by the round-off's luck, not by a margin.
+     * every scene: the speculative distance alone reached only the scenes where some gap falls between
+     * the two distances (14 of the library's 99), gravity every scene with gravity (73 to 75 of them).
+     * A verdict that flips under a nudge was reached by the round-off's luck, not by a margin.
      *
      * @param factor finite and &gt; 0
      * @param defaultDistance the engine's default speculative distance, for a scene that sets none

@@ -82,6 +82,7 @@ class RunCommandTest {
         assertEquals(0, Main.execute("run", "--schema", Repo.schema().toString(), "--reports", reports.toString(),
                 "--no-progress", "--nudge", "1.02", scenes.toString()));
         assertEquals(1.02, results(reports).get("nudge").getAsDouble());
+        assertEquals(1.000002, results(reports).get("nudgeGravity").getAsDouble(), 1e-15);
         assertTrue(Files.readString(reports.resolve("summary.txt")).contains("speculative distance times 1.02 and gravity times 1.000002"));
         assertEquals(2, Main.execute("run", "--schema", Repo.schema().toString(), "--reports",
                 dir.resolve("r2").toString(), "--no-progress", "--nudge", "0", scenes.toString()));
