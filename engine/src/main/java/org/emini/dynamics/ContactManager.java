@@ -40,7 +40,7 @@ final class ContactManager implements PairCallback, QueryCallback {
     private byte[] outcome = new byte[64];
     // The collide phase's inputs, as the range task reads them.
     private BroadPhase phaseBroadPhase;
-    private float phaseDt;
+    private float phaseSweepTime;
     private float phaseSpeculative;
     private final WorkerPool.RangeTask collideTask = new WorkerPool.RangeTask() {
         @Override
@@ -463,18 +463,19 @@ final class ContactManager implements PairCallback, QueryCallback {
 
     /**
      * Runs the narrowphase on every active contact, dropping those whose fat boxes no longer
-     * overlap. The speculative margin grows with the distance the pair can close in one tick, so
-     * bodies moving several pixels per tick are caught before they overlap.
+     * overlap. The speculative margin grows with the distance the pair can close in sweepTime (the
+     * tick times {@link SolverSettings#getSpeculativeSweep()}), so bodies moving several pixels per
+     * tick are caught before they overlap.
      *
      * <p>With a worker pool the manifolds are computed by several threads ({@link NarrowPhase}: each
      * writes only its contacts); then this thread, in contact order, asks the filters that must be
      * asked, destroys the contacts that ended and reports touches, so the result and the events are
      * those of one thread.
      */
-    void collide(BroadPhase broadPhase, float dt, float speculative, int from) {
+    void collide(BroadPhase broadPhase, float sweepTime, float speculative, int from) {
         reuseTolerance = Math.min(world.getSolverSettings().getManifoldReuseDistance(), 0.5f * speculative);
         phaseBroadPhase = broadPhase;
-        phaseDt = dt;
+        phaseSweepTime = sweepTime;
         phaseSpeculative = speculative;
         if (outcome.length < activeCount) {
             outcome = new byte[Math.max(activeCount, 2 * outcome.length)];
@@ -497,7 +498,7 @@ final class ContactManager implements PairCallback, QueryCallback {
             if (o == NarrowPhase.FILTER) {
                 c.filterDirty = false;
                 o = shouldCollide(c.bodyA, c.bodyB) && filterAccepts(c.bodyA, c.bodyB)
-                    ? own.collideParts(c, parts, broadPhase, dt, speculative, reuseTolerance) : NarrowPhase.DEAD;
+                    ? own.collideParts(c, parts, broadPhase, sweepTime, speculative, reuseTolerance) : NarrowPhase.DEAD;
                 if (o != NarrowPhase.DEAD) {
                     o = touch(c, speculative);
                     apart.note(c);
@@ -527,7 +528,7 @@ final class ContactManager implements PairCallback, QueryCallback {
     private void collideRange(int worker, int from, int to) {
         NarrowPhase np = narrow[worker];
         BroadPhase broadPhase = phaseBroadPhase;
-        float dt = phaseDt;
+        float sweepTime = phaseSweepTime;
         float speculative = phaseSpeculative;
         float tolerance = reuseTolerance;
         Contact[] list = active;
@@ -538,7 +539,7 @@ final class ContactManager implements PairCallback, QueryCallback {
         for (int i = from; i < to; i++) {
             int j = index == null ? i : index[i];
             if (copies.isValid(j)) {
-                byte o = np.collideApart(copies, j, parts, broadPhase, dt, speculative);
+                byte o = np.collideApart(copies, j, parts, broadPhase, sweepTime, speculative);
                 if (o != NarrowPhase.UNKNOWN) {
                     out[i] = o;
                     none[i] = true;
@@ -546,8 +547,8 @@ final class ContactManager implements PairCallback, QueryCallback {
                 }
             }
             Contact c = list[i];
-            byte o = c.segmentSlot >= 0 ? np.collideLandscape(c, parts, broadPhase, dt, speculative, tolerance)
-                : np.collideBodies(c, parts, broadPhase, dt, speculative, tolerance);
+            byte o = c.segmentSlot >= 0 ? np.collideLandscape(c, parts, broadPhase, sweepTime, speculative, tolerance)
+                : np.collideBodies(c, parts, broadPhase, sweepTime, speculative, tolerance);
             out[i] = o == NarrowPhase.ALIVE ? touch(c, speculative) : o;
             copies.note(c);
             none[i] = c.pointCount == 0;

@@ -28,21 +28,21 @@ final class NarrowPhase {
     private final Segment segment = new Segment();
 
     /** Collides a contact between two bodies' parts, unless its filter must be asked first. */
-    byte collideBodies(Contact c, PartKeys parts, BroadPhase broadPhase, float dt, float speculative, float reuseTolerance) {
+    byte collideBodies(Contact c, PartKeys parts, BroadPhase broadPhase, float sweepTime, float speculative, float reuseTolerance) {
         if (c.filterDirty) {
             return FILTER;
         }
-        return collideParts(c, parts, broadPhase, dt, speculative, reuseTolerance);
+        return collideParts(c, parts, broadPhase, sweepTime, speculative, reuseTolerance);
     }
 
     /** Collides a contact between two bodies' parts whose filter allows them. */
-    byte collideParts(Contact c, PartKeys parts, BroadPhase broadPhase, float dt, float speculative, float reuseTolerance) {
+    byte collideParts(Contact c, PartKeys parts, BroadPhase broadPhase, float sweepTime, float speculative, float reuseTolerance) {
         Body a = c.bodyA;
         Body b = c.bodyB;
         if (!broadPhase.testOverlap(parts.proxy(c.keyA), parts.proxy(c.keyB))) {
             return DEAD;
         }
-        float sweep = dt * (sweepSpeed(a) + sweepSpeed(b));
+        float sweep = sweepTime * (sweepSpeed(a) + sweepSpeed(b));
         Shape sa = a.getShape();
         Shape sb = b.getShape();
         Shape pa = ContactManager.part(sa, c.partA);
@@ -67,7 +67,7 @@ final class NarrowPhase {
      * {@link #collideParts} would decide from the contact: DEAD when the fat boxes no longer overlap,
      * ALIVE when it stays apart with the same friction and elasticity (nothing to write), else UNKNOWN.
      */
-    byte collideApart(ApartPairs apart, int index, PartKeys parts, BroadPhase broadPhase, float dt, float speculative) {
+    byte collideApart(ApartPairs apart, int index, PartKeys parts, BroadPhase broadPhase, float sweepTime, float speculative) {
         int keyA = apart.keyA(index);
         int keyB = apart.keyB(index);
         if (!broadPhase.testOverlap(parts.proxy(keyA), parts.proxy(keyB))) {
@@ -75,7 +75,7 @@ final class NarrowPhase {
         }
         Body a = parts.body(keyA);
         Body b = parts.body(keyB);
-        float sweep = dt * (sweepSpeed(a) + sweepSpeed(b));
+        float sweep = sweepTime * (sweepSpeed(a) + sweepSpeed(b));
         Shape sa = a.getShape();
         Shape sb = b.getShape();
         Shape pa = ContactManager.part(sa, parts.part(keyA));
@@ -88,7 +88,7 @@ final class NarrowPhase {
     }
 
     /** Collides a contact between a body's part and a landscape segment. */
-    byte collideLandscape(Contact c, PartKeys parts, BroadPhase broadPhase, float dt, float speculative, float reuseTolerance) {
+    byte collideLandscape(Contact c, PartKeys parts, BroadPhase broadPhase, float sweepTime, float speculative, float reuseTolerance) {
         Body a = c.bodyA;
         Landscape l = c.landscape;
         int slot = c.segmentSlot;
@@ -99,7 +99,7 @@ final class NarrowPhase {
             return DEAD;
         }
         c.filterDirty = false;
-        float sweep = dt * sweepSpeed(a);
+        float sweep = sweepTime * sweepSpeed(a);
         Shape whole = a.getShape();
         if (ManifoldReuse.reuse(c, a, null, sweep, reuseTolerance)) {
             c.friction = whole.getFriction() * l.getFriction();

@@ -1324,7 +1324,7 @@ public abstract class Simulation {
         } else {
             contacts.gatherAll();
         }
-        contacts.collide(broadPhase, dt, settings.getSpeculativeDistance(), 0);
+        contacts.collide(broadPhase, dt * settings.getSpeculativeSweep(), settings.getSpeculativeDistance(), 0);
         if (sleep.isEnabled()) {
             wakeTouched(dt);
         }
@@ -1371,7 +1371,7 @@ public abstract class Simulation {
             area.collect(this, broadPhase, bodies.ordered(), bodies.count());
             stepData.recordStart(area.bodies, area.count);
             from = contacts.gatherMore(area.bodies, area.count, tickCount);
-            contacts.collide(broadPhase, dt, settings.getSpeculativeDistance(), from);
+            contacts.collide(broadPhase, dt * settings.getSpeculativeSweep(), settings.getSpeculativeDistance(), from);
         }
     }
 

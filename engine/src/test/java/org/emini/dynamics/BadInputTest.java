@@ -64,6 +64,8 @@ class BadInputTest {
         refused("World.setConstraintIterations", () -> world.setConstraintIterations(0));
         refused("World.setDampingLateral", () -> world.setDampingLateral(2f));
         refused("SolverSettings.setContactHertz", () -> world.getSolverSettings().setContactHertz(Float.NaN));
+        refused("SolverSettings.setSpeculativeSweep: factor must be >= 0", () -> world.getSolverSettings().setSpeculativeSweep(-0.5f));
+        refused("SolverSettings.setSpeculativeSweep", () -> world.getSolverSettings().setSpeculativeSweep(Float.POSITIVE_INFINITY));
         Body b = new Body(0f, 0f, Shape.createCircle(1f), true);
         world.addBody(b);
         refused("already belongs", () -> world.addBody(b));

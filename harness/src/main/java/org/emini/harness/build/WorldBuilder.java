@@ -99,6 +99,7 @@ public final class WorldBuilder {
         switch (key) {
             case "linearSlop" -> s.setLinearSlop(v);
             case "speculativeDistance" -> s.setSpeculativeDistance(v);
+            case "speculativeSweep" -> s.setSpeculativeSweep(v);
             case "manifoldReuseDistance" -> s.setManifoldReuseDistance(v);
             case "aabbMargin" -> s.setAabbMargin(v);
             case "contactHertz" -> s.setContactHertz(v);
