@@ -125,9 +125,9 @@ public final class SolverSettings {
      *
      * <p>Below 1 fewer contacts are solved where many bodies move fast (a tumbling pile: at 0 it runs in
      * about 0.77 of its time), and contacts come later: falling bodies overlap, landings rebound, and
-     * two fast bodies may pass through each other, as may a moving kinematic body and a dynamic one (the
-     * fast-body pass still sweeps fast bodies against static ones, and bullets against every body). At
-     * 0, 7 of the scenario library's 99 scenes fail (bench/RESULTS.md, session 22).
+     * two fast dynamic bodies may pass through each other (the fast-body pass still sweeps fast bodies
+     * against static and moving kinematic ones, and bullets against every body). At 0, 7 of the
+     * scenario library's 99 scenes fail (bench/RESULTS.md, session 22).
      *
      * @return the factor
      */
